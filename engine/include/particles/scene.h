@@ -1,0 +1,100 @@
+// A scene: plain data that every part of the project reads (engine, Box2D
+// twin, viewer, comparison suite). The JSON form is documented in
+// docs/scene-format.md and parsed by the scenefile library; the engine itself
+// never touches JSON.
+#pragma once
+
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "particles/material.h"
+#include "particles/types.h"
+
+namespace particles {
+
+// Moment of inertia of a uniform disk about its centre, kg m^2.
+inline double diskInertia(double mass, double radius) { return 0.5 * mass * radius * radius; }
+
+struct BallDef {
+  Vec2 position{0.0, 0.0};       // m
+  Vec2 velocity{0.0, 0.0};       // m/s
+  double angle = 0.0;            // rad, counter-clockwise
+  double angularVelocity = 0.0;  // rad/s, counter-clockwise positive
+  double radius = 0.5;           // m, > 0
+  double mass = 1.0;             // kg, > 0
+  // kg m^2, > 0. Unset means a uniform disk, m r^2 / 2.
+  std::optional<double> inertia;
+  // Per-ball overrides of the scene's contact material; mixed pairwise with
+  // mixRestitution / mixFriction.
+  std::optional<double> restitution;
+  std::optional<double> friction;
+
+  double resolvedInertia() const { return inertia ? *inertia : diskInertia(mass, radius); }
+};
+
+// A static, two-sided line segment from a to b. Walls never move; in the
+// contact formulas they are a body with zero inverse mass and inertia.
+struct WallDef {
+  Vec2 a{0.0, 0.0};  // m
+  Vec2 b{1.0, 0.0};  // m
+  std::optional<double> restitution;
+  std::optional<double> friction;
+};
+
+// Four walls enclosing the axis-aligned box [lo, hi], in the order bottom,
+// right, top, left.
+std::vector<WallDef> boxWalls(const Vec2& lo, const Vec2& hi);
+
+enum class ForceType {
+  // The handout's mouse drag: F = stiffness * (target - centre), applied at
+  // the ball's centre, so it exerts no torque.
+  Pull,
+  // A constant force at the centre plus a constant torque.
+  Constant,
+};
+
+struct ForceDef {
+  ForceType type = ForceType::Pull;
+  int ball = 0;                   // index into SceneDef::balls
+  Vec2 target{0.0, 0.0};          // m, Pull only
+  double stiffness = 0.0;         // N/m, Pull only
+  Vec2 force{0.0, 0.0};           // N, Constant only
+  double torque = 0.0;            // N m, Constant only (counter-clockwise positive)
+  double start = 0.0;             // s, active while start <= t < end
+  double end = std::numeric_limits<double>::infinity();  // s
+
+  bool activeAt(double t) const { return t >= start && t < end; }
+};
+
+// How the engine integrates and resolves contacts. Defaults suit most scenes.
+struct SolverSettings {
+  // Upper bound on velocity passes over the contacts in one step; passes stop
+  // earlier as soon as no contact is approaching. Hitting the bound is counted
+  // in StepStats::passLimitHits.
+  int contactPasses = 64;
+  // Upper bound on position-projection passes that remove overlap after the
+  // position update.
+  int correctionPasses = 8;
+  // Ball count from which the uniform grid replaces brute-force pair finding.
+  // Measured with bench/broad_phase_bench (docs/performance.md). 0 = always grid.
+  int gridThreshold = 48;
+};
+
+struct SceneDef {
+  std::string name;
+  Vec2 gravity{0.0, 0.0};  // m/s^2
+  ContactMaterial contact;  // scene default material
+  std::vector<WallDef> walls;
+  std::vector<BallDef> balls;
+  std::vector<ForceDef> forces;
+  double dt = 1e-3;       // s, > 0
+  double duration = 1.0;  // s, >= 0
+  SolverSettings solver;
+
+  // Number of steps that `duration` asks for: round(duration / dt).
+  long long stepCount() const;
+};
+
+}  // namespace particles

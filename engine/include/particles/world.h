@@ -1,0 +1,92 @@
+// The simulation world: balls, walls and forces from a SceneDef, advanced by
+// fixed steps. The step is readable top to bottom in World::step().
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "particles/broad_phase.h"
+#include "particles/scene.h"
+
+namespace particles {
+
+// What a caller may read of one ball.
+struct BallState {
+  Vec2 position;           // m
+  Vec2 velocity;           // m/s
+  double angle;            // rad
+  double angularVelocity;  // rad/s
+};
+
+// Counters of the last step, and totals since the world was built.
+struct StepStats {
+  int contacts = 0;             // contacts found this step (ball-ball + ball-wall)
+  int passes = 0;               // velocity passes used this step
+  int correctionPasses = 0;     // position passes used this step
+  double maxOverlap = 0.0;      // m, largest overlap seen by the position pass
+  long long passLimitHits = 0;  // steps (in total) that ended at SolverSettings::contactPasses
+  long long steps = 0;          // steps taken in total
+};
+
+// Which optional stages this scene needs; decided once when the world is
+// built, so a scene pays only for what it uses.
+struct StagePlan {
+  bool walls = false;        // any wall: otherwise no wall pass at all
+  bool tangential = false;   // any contact with mu > 0: otherwise no tangential/angular contact work
+  bool torques = false;      // any force with a torque
+  bool forces = false;       // any scene force
+  bool gravity = false;      // non-zero gravity
+  bool spin = false;         // anything can rotate: otherwise angles are not integrated
+  bool grid = false;         // uniform grid instead of brute-force pairs
+};
+
+class World {
+ public:
+  explicit World(const SceneDef& scene);
+
+  // Advances the world by one step of SceneDef::dt.
+  void step();
+  // Advances by n steps.
+  void run(long long steps);
+
+  double time() const { return static_cast<double>(stepIndex_) * dt_; }
+  long long stepIndex() const { return stepIndex_; }
+  double dt() const { return dt_; }
+  std::size_t ballCount() const { return position_.size(); }
+  BallState ball(std::size_t i) const;
+  const StepStats& stats() const { return stats_; }
+  const StagePlan& plan() const { return plan_; }
+  const SceneDef& scene() const { return scene_; }
+
+  // Replaces the target of a pull force (the viewer's mouse drag).
+  void setPullTarget(std::size_t force, const Vec2& target);
+
+ private:
+  void applyForces();
+  void resolveContacts();
+  void integratePositions();
+  void correctOverlaps();
+
+  void findBallContacts(std::vector<BallPair>& out);
+
+  SceneDef scene_;
+  StagePlan plan_;
+  double dt_;
+  long long stepIndex_ = 0;
+  StepStats stats_;
+
+  // Hot per-ball data, structure of arrays.
+  std::vector<Vec2> position_, velocity_;
+  std::vector<double> angle_, angularVelocity_;
+  std::vector<double> radius_, invMass_, invInertia_;
+  std::vector<ContactMaterial> material_;  // per ball, overrides applied
+  std::vector<ContactMaterial> wallMaterial_;
+
+  // Scratch reused across steps so a step allocates nothing once warm.
+  std::vector<BallPair> pairs_;
+  std::vector<WallHit> wallHits_;
+  BroadPhase broadPhase_;
+};
+
+}  // namespace particles

@@ -1,0 +1,220 @@
+#include "particles/world.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "particles/contact_impulse.h"
+
+namespace particles {
+namespace {
+
+// A contact counts as approaching when its normal relative velocity is below
+// -kApproachTolerance times the speeds involved: after an e = 0 impulse the
+// residual is rounding noise (~1e-16 of the speeds), and chasing it would
+// only burn passes.
+constexpr double kApproachTolerance = 1e-12;
+
+// Overlap the position pass leaves alone, relative to the radii involved:
+// rounding after a projection, not penetration.
+constexpr double kOverlapTolerance = 1e-9;
+
+bool approaching(const ContactBody& a, const ContactBody& b, double gn) {
+  const double scale = a.velocity.norm() + b.velocity.norm() +
+                       std::abs(a.angularVelocity) * a.leverArm +
+                       std::abs(b.angularVelocity) * b.leverArm;
+  return gn < -kApproachTolerance * scale;
+}
+
+}  // namespace
+
+World::World(const SceneDef& scene) : scene_(scene), dt_(scene.dt) {
+  if (!(scene.dt > 0.0)) throw std::invalid_argument("World: dt must be > 0");
+  const std::size_t n = scene.balls.size();
+  position_.reserve(n);
+  velocity_.reserve(n);
+  bool spinning = false;
+  for (const BallDef& b : scene.balls) {
+    position_.push_back(b.position);
+    velocity_.push_back(b.velocity);
+    angle_.push_back(b.angle);
+    angularVelocity_.push_back(b.angularVelocity);
+    radius_.push_back(b.radius);
+    invMass_.push_back(1.0 / b.mass);
+    invInertia_.push_back(1.0 / b.resolvedInertia());
+    material_.push_back(resolveMaterial(scene.contact, b.restitution, b.friction));
+    spinning = spinning || b.angularVelocity != 0.0;
+  }
+  for (const WallDef& w : scene.walls)
+    wallMaterial_.push_back(resolveMaterial(scene.contact, w.restitution, w.friction));
+
+  plan_.walls = !scene.walls.empty();
+  plan_.gravity = scene.gravity != Vec2::Zero();
+  plan_.forces = !scene.forces.empty();
+  for (const ForceDef& f : scene.forces)
+    plan_.torques = plan_.torques || (f.type == ForceType::Constant && f.torque != 0.0);
+  // Tangential work is needed if any pair of bodies that could meet mixes to
+  // mu > 0. mixFriction is 0 as soon as one side is 0, so it is enough to find
+  // one ball with mu > 0 and another body (ball or wall) with mu > 0.
+  int gripBalls = 0;
+  for (const ContactMaterial& m : material_) gripBalls += m.friction > 0.0;
+  bool gripWalls = false;
+  for (const ContactMaterial& m : wallMaterial_) gripWalls = gripWalls || m.friction > 0.0;
+  plan_.tangential = gripBalls >= 2 || (gripBalls >= 1 && gripWalls);
+  plan_.spin = spinning || plan_.tangential || plan_.torques;
+  plan_.grid = static_cast<int>(n) >= scene.solver.gridThreshold;
+}
+
+BallState World::ball(std::size_t i) const {
+  return {position_[i], velocity_[i], angle_[i], angularVelocity_[i]};
+}
+
+void World::setPullTarget(std::size_t force, const Vec2& target) {
+  scene_.forces.at(force).target = target;
+}
+
+void World::run(long long steps) {
+  for (long long s = 0; s < steps; ++s) step();
+}
+
+// One step, semi-implicit Euler with impulses (docs/physics.md, "The step"):
+// velocities first, then contacts on the new velocities, then positions with
+// the post-impact velocities, then overlap removal.
+void World::step() {
+  applyForces();
+  resolveContacts();
+  integratePositions();
+  correctOverlaps();
+  ++stepIndex_;
+  ++stats_.steps;
+}
+
+void World::applyForces() {
+  const double t = time();
+  if (plan_.gravity)
+    for (Vec2& v : velocity_) v += dt_ * scene_.gravity;
+  if (!plan_.forces) return;
+  for (const ForceDef& f : scene_.forces) {
+    if (!f.activeAt(t)) continue;
+    const std::size_t i = static_cast<std::size_t>(f.ball);
+    if (f.type == ForceType::Pull) {
+      // The handout's drag: from the centre O toward the target M, |F| ~ |OM|.
+      velocity_[i] += dt_ * invMass_[i] * f.stiffness * (f.target - position_[i]);
+    } else {
+      velocity_[i] += dt_ * invMass_[i] * f.force;
+      angularVelocity_[i] += dt_ * invInertia_[i] * f.torque;
+    }
+  }
+}
+
+void World::findBallContacts(std::vector<BallPair>& out) {
+  if (plan_.grid)
+    broadPhase_.findPairs(position_, radius_, out);
+  else
+    findPairsBruteForce(position_, radius_, out);
+}
+
+void World::resolveContacts() {
+  findBallContacts(pairs_);
+  wallHits_.clear();
+  if (plan_.walls) findWallHits(position_, radius_, scene_.walls, wallHits_);
+  stats_.contacts = static_cast<int>(pairs_.size() + wallHits_.size());
+  stats_.passes = 0;
+  if (stats_.contacts == 0) return;
+
+  // One pass visits every contact in a fixed order (ball pairs sorted by
+  // index, then ball-wall contacts by ball and wall) and applies the impulse
+  // to each one still approaching, with the velocities left by the contacts
+  // before it (Gauss-Seidel). Passes repeat until none approaches.
+  const bool tangential = plan_.tangential;
+  auto body = [&](int i, double leverArm) {
+    ContactBody c;
+    c.velocity = velocity_[i];
+    c.invMass = invMass_[i];
+    if (tangential) {
+      c.angularVelocity = angularVelocity_[i];
+      c.invInertia = invInertia_[i];
+      c.leverArm = leverArm;
+    }
+    return c;
+  };
+  auto store = [&](int i, const ContactBody& c) {
+    velocity_[i] = c.velocity;
+    if (tangential) angularVelocity_[i] = c.angularVelocity;
+  };
+  const ContactBody wall;  // zero velocity, zero inverse mass and inertia
+  auto pass = [&](bool apply) {
+    bool any = false;
+    for (const BallPair& p : pairs_) {
+      ContactBody a = body(p.a, radius_[p.a]);
+      ContactBody b = body(p.b, radius_[p.b]);
+      if (!approaching(a, b, contactVelocity(a, b, p.normal).normal)) continue;
+      any = true;
+      if (!apply) return true;
+      resolveImpact(a, b, p.normal, mixMaterials(material_[p.a], material_[p.b]));
+      store(p.a, a);
+      store(p.b, b);
+    }
+    for (const WallHit& h : wallHits_) {
+      ContactBody a = body(h.ball, radius_[h.ball]);
+      ContactBody w = wall;
+      if (!approaching(a, w, contactVelocity(a, w, h.normal).normal)) continue;
+      any = true;
+      if (!apply) return true;
+      resolveImpact(a, w, h.normal, mixMaterials(material_[h.ball], wallMaterial_[h.wall]));
+      store(h.ball, a);
+    }
+    return any;
+  };
+
+  const int maxPasses = std::max(1, scene_.solver.contactPasses);
+  while (stats_.passes < maxPasses && pass(true)) ++stats_.passes;
+  if (stats_.passes == maxPasses && pass(false)) ++stats_.passLimitHits;
+}
+
+void World::integratePositions() {
+  const std::size_t n = position_.size();
+  for (std::size_t i = 0; i < n; ++i) position_[i] += dt_ * velocity_[i];
+  if (plan_.spin)
+    for (std::size_t i = 0; i < n; ++i) angle_[i] += dt_ * angularVelocity_[i];
+}
+
+// Removes what overlap the step left by moving positions only (a projection):
+// velocities are untouched, so no kinetic energy is injected and separating
+// bodies are not held together. Each pair is moved apart along its normal by
+// its overlap, shared in proportion to inverse mass; a ball against a wall
+// moves the whole way. The contact set is found once, then re-measured on
+// each pass (Gauss-Seidel), since one push can deepen a neighbour's overlap.
+void World::correctOverlaps() {
+  stats_.correctionPasses = 0;
+  stats_.maxOverlap = 0.0;
+  findBallContacts(pairs_);
+  wallHits_.clear();
+  if (plan_.walls) findWallHits(position_, radius_, scene_.walls, wallHits_);
+  if (pairs_.empty() && wallHits_.empty()) return;
+
+  const int maxPasses = std::max(1, scene_.solver.correctionPasses);
+  for (int pass = 0; pass < maxPasses; ++pass) {
+    bool moved = false;
+    for (BallPair& p : pairs_) {
+      if (!touchBalls(position_[p.a], radius_[p.a], position_[p.b], radius_[p.b], p)) continue;
+      if (pass == 0) stats_.maxOverlap = std::max(stats_.maxOverlap, p.overlap);
+      if (p.overlap <= kOverlapTolerance * (radius_[p.a] + radius_[p.b])) continue;
+      const double share = p.overlap / (invMass_[p.a] + invMass_[p.b]);
+      position_[p.a] -= share * invMass_[p.a] * p.normal;
+      position_[p.b] += share * invMass_[p.b] * p.normal;
+      moved = true;
+    }
+    for (WallHit& h : wallHits_) {
+      if (!touchWall(position_[h.ball], radius_[h.ball], scene_.walls[h.wall], h)) continue;
+      if (pass == 0) stats_.maxOverlap = std::max(stats_.maxOverlap, h.overlap);
+      if (h.overlap <= kOverlapTolerance * radius_[h.ball]) continue;
+      position_[h.ball] -= h.overlap * h.normal;
+      moved = true;
+    }
+    if (!moved) break;
+    ++stats_.correctionPasses;
+  }
+}
+
+}  // namespace particles
