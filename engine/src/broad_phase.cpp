@@ -101,10 +101,8 @@ void BroadPhase::findPairs(std::span<const Vec2> position, std::span<const doubl
   }
   for (std::size_t c = 1; c < cellStart_.size(); ++c) cellStart_[c] += cellStart_[c - 1];
   cellBalls_.resize(n);
-  {
-    std::vector<int> fill(cellStart_.begin(), cellStart_.end() - 1);
-    for (int i = 0; i < n; ++i) cellBalls_[fill[ballCell_[i]]++] = i;
-  }
+  cellFill_.assign(cellStart_.begin(), cellStart_.end() - 1);
+  for (int i = 0; i < n; ++i) cellBalls_[cellFill_[ballCell_[i]]++] = i;
 
   BallPair pair;
   for (int a = 0; a < n; ++a) {

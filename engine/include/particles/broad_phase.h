@@ -47,6 +47,7 @@ class BroadPhase {
  private:
   std::vector<int> cellStart_;  // prefix sums over cells (counting sort)
   std::vector<int> cellBalls_;  // ball indices grouped by cell
+  std::vector<int> cellFill_;   // next free slot per cell while sorting
   std::vector<int> ballCell_;   // cell of each ball
 };
 
