@@ -124,8 +124,9 @@ void BroadPhase::findPairs(std::span<const Vec2> position, std::span<const doubl
     }
   }
   // Same order as brute force, so results never depend on the finder.
-  std::sort(out.begin(), out.end(),
-            [](const BallPair& p, const BallPair& q) { return p.a != q.a ? p.a < q.a : p.b < q.b; });
+  std::sort(out.begin(), out.end(), [](const BallPair& p, const BallPair& q) {
+    return p.a != q.a ? p.a < q.a : p.b < q.b;
+  });
 }
 
 void findWallHits(std::span<const Vec2> position, std::span<const double> radius,

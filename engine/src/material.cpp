@@ -5,7 +5,9 @@
 
 namespace particles {
 
-double mixRestitution(double e1, double e2) { return std::max(e1, e2); }
+double mixRestitution(double e1, double e2) {
+  return std::max(e1, e2);
+}
 
 double mixFriction(double mu1, double mu2) {
   if (mu1 == 0.0 || mu2 == 0.0) return 0.0;
@@ -14,8 +16,7 @@ double mixFriction(double mu1, double mu2) {
 }
 
 ContactMaterial resolveMaterial(const ContactMaterial& sceneDefault,
-                                std::optional<double> restitution,
-                                std::optional<double> friction) {
+                                std::optional<double> restitution, std::optional<double> friction) {
   return {restitution.value_or(sceneDefault.restitution), friction.value_or(sceneDefault.friction)};
 }
 

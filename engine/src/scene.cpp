@@ -15,6 +15,8 @@ std::vector<WallDef> boxWalls(const Vec2& lo, const Vec2& hi) {
   return {wall(lo, lr), wall(lr, hi), wall(hi, ul), wall(ul, lo)};
 }
 
-long long SceneDef::stepCount() const { return std::llround(duration / dt); }
+long long SceneDef::stepCount() const {
+  return std::llround(duration / dt);
+}
 
 }  // namespace particles

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "particles/contact_impulse.h"
+#include "contact_impulse_impl.h"
 
 namespace particles {
 namespace {
@@ -120,48 +120,77 @@ void World::resolveContacts() {
   if (plan_.walls) findWallHits(position_, radius_, scene_.walls, wallHits_);
   stats_.contacts = static_cast<int>(pairs_.size() + wallHits_.size());
   stats_.passes = 0;
+  impacts_.clear();
   if (stats_.contacts == 0) return;
+  detail::withMutation(scene_.solver.mutation, [&]<Mutation M>() {
+    if (plan_.tangential)
+      resolveContactsAs<M, true>();
+    else
+      resolveContactsAs<M, false>();
+  });
+}
 
-  // One pass visits every contact in a fixed order (ball pairs sorted by
-  // index, then ball-wall contacts by ball and wall) and applies the impulse
-  // to each one still approaching, with the velocities left by the contacts
-  // before it (Gauss-Seidel). Passes repeat until none approaches.
-  const bool tangential = plan_.tangential;
-  auto body = [&](int i, double leverArm) {
+// One pass visits every contact in a fixed order (ball pairs sorted by index,
+// then ball-wall contacts by ball and wall) and applies the impulse to each
+// one still approaching, with the velocities left by the contacts before it
+// (Gauss-Seidel). Passes repeat until none approaches. Without tangential
+// work (every mu = 0) spins are neither read nor written.
+template <Mutation M, bool Tangential>
+void World::resolveContactsAs() {
+  auto body = [&](int i) {
     ContactBody c;
     c.velocity = velocity_[i];
     c.invMass = invMass_[i];
-    if (tangential) {
+    if constexpr (Tangential) {
       c.angularVelocity = angularVelocity_[i];
       c.invInertia = invInertia_[i];
-      c.leverArm = leverArm;
+      c.leverArm = radius_[i];
     }
     return c;
   };
   auto store = [&](int i, const ContactBody& c) {
     velocity_[i] = c.velocity;
-    if (tangential) angularVelocity_[i] = c.angularVelocity;
+    if constexpr (Tangential) angularVelocity_[i] = c.angularVelocity;
   };
+  const std::size_t count = pairs_.size() + wallHits_.size();
+  if (recordImpacts_) {
+    impacts_.assign(count, ImpactEvent{});
+    for (std::size_t k = 0; k < pairs_.size(); ++k)
+      impacts_[k] = {pairs_[k].a, pairs_[k].b, false, pairs_[k].normal, 0.0, 0.0, 0.0};
+    for (std::size_t k = 0; k < wallHits_.size(); ++k) {
+      const WallHit& h = wallHits_[k];
+      impacts_[pairs_.size() + k] = {h.ball, h.wall, true, h.normal, 0.0, 0.0, 0.0};
+    }
+  }
+  auto record = [&](std::size_t k, const ContactImpulse& j, const ContactMaterial& m) {
+    if (!recordImpacts_) return;
+    impacts_[k].normalImpulse += j.normal;
+    impacts_[k].tangentImpulse += j.tangent;
+    impacts_[k].frictionBound += m.friction == 0.0 ? 0.0 : m.friction * j.normal;
+  };
+
   const ContactBody wall;  // zero velocity, zero inverse mass and inertia
   auto pass = [&](bool apply) {
     bool any = false;
-    for (const BallPair& p : pairs_) {
-      ContactBody a = body(p.a, radius_[p.a]);
-      ContactBody b = body(p.b, radius_[p.b]);
-      if (!approaching(a, b, contactVelocity(a, b, p.normal).normal)) continue;
+    for (std::size_t k = 0; k < pairs_.size(); ++k) {
+      const BallPair& p = pairs_[k];
+      ContactBody a = body(p.a), b = body(p.b);
+      if (!approaching(a, b, detail::contactVelocityAs<M>(a, b, p.normal).normal)) continue;
       any = true;
       if (!apply) return true;
-      resolveImpact(a, b, p.normal, mixMaterials(material_[p.a], material_[p.b]));
+      const ContactMaterial m = mixMaterials(material_[p.a], material_[p.b]);
+      record(k, detail::resolveImpactAs<M>(a, b, p.normal, m), m);
       store(p.a, a);
       store(p.b, b);
     }
-    for (const WallHit& h : wallHits_) {
-      ContactBody a = body(h.ball, radius_[h.ball]);
-      ContactBody w = wall;
-      if (!approaching(a, w, contactVelocity(a, w, h.normal).normal)) continue;
+    for (std::size_t k = 0; k < wallHits_.size(); ++k) {
+      const WallHit& h = wallHits_[k];
+      ContactBody a = body(h.ball), w = wall;
+      if (!approaching(a, w, detail::contactVelocityAs<M>(a, w, h.normal).normal)) continue;
       any = true;
       if (!apply) return true;
-      resolveImpact(a, w, h.normal, mixMaterials(material_[h.ball], wallMaterial_[h.wall]));
+      const ContactMaterial m = mixMaterials(material_[h.ball], wallMaterial_[h.wall]);
+      record(pairs_.size() + k, detail::resolveImpactAs<M>(a, w, h.normal, m), m);
       store(h.ball, a);
     }
     return any;
@@ -170,6 +199,8 @@ void World::resolveContacts() {
   const int maxPasses = std::max(1, scene_.solver.contactPasses);
   while (stats_.passes < maxPasses && pass(true)) ++stats_.passes;
   if (stats_.passes == maxPasses && pass(false)) ++stats_.passLimitHits;
+  if (recordImpacts_)
+    std::erase_if(impacts_, [](const ImpactEvent& e) { return e.normalImpulse == 0.0; });
 }
 
 void World::integratePositions() {

@@ -7,17 +7,18 @@
 #pragma once
 
 #include "particles/material.h"
+#include "particles/mutation.h"
 #include "particles/types.h"
 
 namespace particles {
 
 // The velocity state and mass properties of one side of a contact.
 struct ContactBody {
-  Vec2 velocity{0.0, 0.0};   // m/s
+  Vec2 velocity{0.0, 0.0};       // m/s
   double angularVelocity = 0.0;  // rad/s
-  double invMass = 0.0;      // 1/kg; 0 for a wall
-  double invInertia = 0.0;   // 1/(kg m^2); 0 for a wall
-  double leverArm = 0.0;     // m, distance from the centre to the contact point
+  double invMass = 0.0;          // 1/kg; 0 for a wall
+  double invInertia = 0.0;       // 1/(kg m^2); 0 for a wall
+  double leverArm = 0.0;         // m, distance from the centre to the contact point
 };
 
 // Relative velocity of b's surface with respect to a's surface at the contact,
@@ -28,10 +29,10 @@ struct ContactVelocity {
 };
 
 struct ContactImpulse {
-  double normal = 0.0;      // N s, lambdaN >= 0 for an approaching contact
-  double tangent = 0.0;     // N s, lambdaT
-  double unclamped = 0.0;   // N s, the no-slip lambdaT before the Coulomb clamp
-  bool clamped = false;     // true when |unclamped| > mu * lambdaN (sliding)
+  double normal = 0.0;     // N s, lambdaN >= 0 for an approaching contact
+  double tangent = 0.0;    // N s, lambdaT
+  double unclamped = 0.0;  // N s, the no-slip lambdaT before the Coulomb clamp
+  bool clamped = false;    // true when |unclamped| > mu * lambdaN (sliding)
 };
 
 ContactVelocity contactVelocity(const ContactBody& a, const ContactBody& b, const Vec2& n);
@@ -40,14 +41,16 @@ ContactVelocity contactVelocity(const ContactBody& a, const ContactBody& b, cons
 // of -e gn afterwards; lambdaT cancels the tangential slip (no-slip), clamped
 // to |lambdaT| <= mu lambdaN with its sign kept. With mu == 0 no tangential
 // impulse is computed at all.
+// `mutation` is for the comparison suite's mutation check only.
 ContactImpulse computeImpulse(const ContactBody& a, const ContactBody& b, const Vec2& n,
-                              const ContactMaterial& material);
+                              const ContactMaterial& material, Mutation mutation = Mutation::None);
 
 // Applies -P to a and +P to b, with the angular updates w -= r lambdaT / J.
-void applyImpulse(ContactBody& a, ContactBody& b, const Vec2& n, const ContactImpulse& impulse);
+void applyImpulse(ContactBody& a, ContactBody& b, const Vec2& n, const ContactImpulse& impulse,
+                  Mutation mutation = Mutation::None);
 
 // computeImpulse + applyImpulse.
 ContactImpulse resolveImpact(ContactBody& a, ContactBody& b, const Vec2& n,
-                             const ContactMaterial& material);
+                             const ContactMaterial& material, Mutation mutation = Mutation::None);
 
 }  // namespace particles

@@ -24,8 +24,7 @@ double mixFriction(double mu1, double mu2);
 
 // A body's own values: an override if it has one, else the scene default.
 ContactMaterial resolveMaterial(const ContactMaterial& sceneDefault,
-                                std::optional<double> restitution,
-                                std::optional<double> friction);
+                                std::optional<double> restitution, std::optional<double> friction);
 
 ContactMaterial mixMaterials(const ContactMaterial& a, const ContactMaterial& b);
 

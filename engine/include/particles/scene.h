@@ -10,12 +10,15 @@
 #include <vector>
 
 #include "particles/material.h"
+#include "particles/mutation.h"
 #include "particles/types.h"
 
 namespace particles {
 
 // Moment of inertia of a uniform disk about its centre, kg m^2.
-inline double diskInertia(double mass, double radius) { return 0.5 * mass * radius * radius; }
+inline double diskInertia(double mass, double radius) {
+  return 0.5 * mass * radius * radius;
+}
 
 struct BallDef {
   Vec2 position{0.0, 0.0};       // m
@@ -57,12 +60,12 @@ enum class ForceType {
 
 struct ForceDef {
   ForceType type = ForceType::Pull;
-  int ball = 0;                   // index into SceneDef::balls
-  Vec2 target{0.0, 0.0};          // m, Pull only
-  double stiffness = 0.0;         // N/m, Pull only
-  Vec2 force{0.0, 0.0};           // N, Constant only
-  double torque = 0.0;            // N m, Constant only (counter-clockwise positive)
-  double start = 0.0;             // s, active while start <= t < end
+  int ball = 0;            // index into SceneDef::balls
+  Vec2 target{0.0, 0.0};   // m, Pull only
+  double stiffness = 0.0;  // N/m, Pull only
+  Vec2 force{0.0, 0.0};    // N, Constant only
+  double torque = 0.0;     // N m, Constant only (counter-clockwise positive)
+  double start = 0.0;      // s, active while start <= t < end
   double end = std::numeric_limits<double>::infinity();  // s
 
   bool activeAt(double t) const { return t >= start && t < end; }
@@ -79,12 +82,15 @@ struct SolverSettings {
   int correctionPasses = 8;
   // Ball count from which the uniform grid replaces brute-force pair finding.
   // Measured with bench/broad_phase_bench (docs/performance.md). 0 = always grid.
-  int gridThreshold = 48;
+  int gridThreshold = 64;
+  // A deliberately wrong solver, for the comparison suite's mutation check
+  // only. Scene files cannot set it.
+  Mutation mutation = Mutation::None;
 };
 
 struct SceneDef {
   std::string name;
-  Vec2 gravity{0.0, 0.0};  // m/s^2
+  Vec2 gravity{0.0, 0.0};   // m/s^2
   ContactMaterial contact;  // scene default material
   std::vector<WallDef> walls;
   std::vector<BallDef> balls;

@@ -19,6 +19,18 @@ struct BallState {
   double angularVelocity;  // rad/s
 };
 
+// One contact that exchanged an impulse during the last step, with the
+// impulses summed over the step's passes (b receives +P, a receives -P).
+struct ImpactEvent {
+  int a = 0;  // ball index
+  int b = 0;  // ball index, or wall index when `wall`
+  bool wall = false;
+  Vec2 normal{1.0, 0.0};        // unit, from a to b, at the start of the step
+  double normalImpulse = 0.0;   // N s, sum of lambdaN (>= 0)
+  double tangentImpulse = 0.0;  // N s, sum of lambdaT
+  double frictionBound = 0.0;   // N s, sum of mu lambdaN (inf for no-slip)
+};
+
 // Counters of the last step, and totals since the world was built.
 struct StepStats {
   int contacts = 0;             // contacts found this step (ball-ball + ball-wall)
@@ -32,13 +44,13 @@ struct StepStats {
 // Which optional stages this scene needs; decided once when the world is
 // built, so a scene pays only for what it uses.
 struct StagePlan {
-  bool walls = false;        // any wall: otherwise no wall pass at all
-  bool tangential = false;   // any contact with mu > 0: otherwise no tangential/angular contact work
-  bool torques = false;      // any force with a torque
-  bool forces = false;       // any scene force
-  bool gravity = false;      // non-zero gravity
-  bool spin = false;         // anything can rotate: otherwise angles are not integrated
-  bool grid = false;         // uniform grid instead of brute-force pairs
+  bool walls = false;       // any wall: otherwise no wall pass at all
+  bool tangential = false;  // any contact with mu > 0: otherwise no tangential/angular contact work
+  bool torques = false;     // any force with a torque
+  bool forces = false;      // any scene force
+  bool gravity = false;     // non-zero gravity
+  bool spin = false;        // anything can rotate: otherwise angles are not integrated
+  bool grid = false;        // uniform grid instead of brute-force pairs
 };
 
 class World {
@@ -62,9 +74,16 @@ class World {
   // Replaces the target of a pull force (the viewer's mouse drag).
   void setPullTarget(std::size_t force, const Vec2& target);
 
+  // When on, each step records the contacts that exchanged an impulse
+  // (impacts()); off by default, since it costs a little per contact.
+  void recordImpacts(bool on) { recordImpacts_ = on; }
+  const std::vector<ImpactEvent>& impacts() const { return impacts_; }
+
  private:
   void applyForces();
   void resolveContacts();
+  template <Mutation M, bool Tangential>
+  void resolveContactsAs();
   void integratePositions();
   void correctOverlaps();
 
@@ -87,6 +106,9 @@ class World {
   std::vector<BallPair> pairs_;
   std::vector<WallHit> wallHits_;
   BroadPhase broadPhase_;
+
+  bool recordImpacts_ = false;
+  std::vector<ImpactEvent> impacts_;
 };
 
 }  // namespace particles
