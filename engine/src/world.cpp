@@ -28,11 +28,28 @@ bool approaching(const ContactBody& a, const ContactBody& b, double gn) {
 
 }  // namespace
 
-World::World(const SceneDef& scene) : scene_(scene), dt_(scene.dt) {
+World::World(const SceneDef& scene) {
+  reset(scene);
+}
+
+// Building reuses the vectors' storage, so a World reset for case after case
+// (the comparison suite) allocates nothing once warm.
+void World::reset(const SceneDef& scene) {
   if (!(scene.dt > 0.0)) throw std::invalid_argument("World: dt must be > 0");
-  const std::size_t n = scene.balls.size();
-  position_.reserve(n);
-  velocity_.reserve(n);
+  scene_ = scene;
+  dt_ = scene.dt;
+  stepIndex_ = 0;
+  stats_ = {};
+  impacts_.clear();
+  position_.clear();
+  velocity_.clear();
+  angle_.clear();
+  angularVelocity_.clear();
+  radius_.clear();
+  invMass_.clear();
+  invInertia_.clear();
+  material_.clear();
+  wallMaterial_.clear();
   bool spinning = false;
   for (const BallDef& b : scene.balls) {
     position_.push_back(b.position);
@@ -48,6 +65,7 @@ World::World(const SceneDef& scene) : scene_(scene), dt_(scene.dt) {
   for (const WallDef& w : scene.walls)
     wallMaterial_.push_back(resolveMaterial(scene.contact, w.restitution, w.friction));
 
+  plan_ = {};
   plan_.walls = !scene.walls.empty();
   plan_.gravity = scene.gravity != Vec2::Zero();
   plan_.forces = !scene.forces.empty();
@@ -62,7 +80,7 @@ World::World(const SceneDef& scene) : scene_(scene), dt_(scene.dt) {
   for (const ContactMaterial& m : wallMaterial_) gripWalls = gripWalls || m.friction > 0.0;
   plan_.tangential = gripBalls >= 2 || (gripBalls >= 1 && gripWalls);
   plan_.spin = spinning || plan_.tangential || plan_.torques;
-  plan_.grid = static_cast<int>(n) >= scene.solver.gridThreshold;
+  plan_.grid = static_cast<int>(scene.balls.size()) >= scene.solver.gridThreshold;
 }
 
 BallState World::ball(std::size_t i) const {

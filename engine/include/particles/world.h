@@ -56,6 +56,8 @@ struct StagePlan {
 class World {
  public:
   explicit World(const SceneDef& scene);
+  // Rebuilds the world for another scene, as if newly constructed.
+  void reset(const SceneDef& scene);
 
   // Advances the world by one step of SceneDef::dt.
   void step();
@@ -91,7 +93,7 @@ class World {
 
   SceneDef scene_;
   StagePlan plan_;
-  double dt_;
+  double dt_ = 0.0;
   long long stepIndex_ = 0;
   StepStats stats_;
 
