@@ -30,10 +30,17 @@ bool touchBalls(const Vec2& xa, double ra, const Vec2& xb, double rb, BallPair& 
 bool touchWall(const Vec2& x, double r, const WallDef& wall, WallHit& hit) {
   const Vec2 ab = wall.b - wall.a;
   const double len2 = ab.squaredNorm();
-  double s = len2 > 0.0 ? (x - wall.a).dot(ab) / len2 : 0.0;
-  s = std::clamp(s, 0.0, 1.0);
-  const Vec2 closest = wall.a + s * ab;
-  const Vec2 d = closest - x;
+  const double s = len2 > 0.0 ? (x - wall.a).dot(ab) / len2 : 0.0;
+  Vec2 d;
+  if (s > 0.0 && s < 1.0) {
+    // Inside the segment, go straight along its normal: a + s ab would carry
+    // rounding of the order of eps times the wall's length into the normal,
+    // and a floor's normal should be exactly (0, -1).
+    const Vec2 unit = perpLeft(ab) / std::sqrt(len2);
+    d = -(x - wall.a).dot(unit) * unit;
+  } else {
+    d = (s <= 0.0 ? wall.a : wall.b) - x;
+  }
   const double dist2 = d.squaredNorm();
   const double detect = r * (1.0 + kTouchSlop);
   if (dist2 > detect * detect) return false;
@@ -81,8 +88,16 @@ void BroadPhase::findPairs(std::span<const Vec2> position, std::span<const doubl
   // Cells one largest diameter wide: touching balls are in the same or a
   // neighbouring cell. A sparse scene would need a huge grid, so the cell
   // count is capped near 4 n by widening the cells.
-  double cell = 2.0 * maxRadius;
+  // The slop lets touching balls be a hair more than a diameter apart; the
+  // cells are widened by more than it so they still land in neighbouring cells.
+  double cell = 2.0 * maxRadius * (1.0 + 4.0 * kTouchSlop);
   const Vec2 extent = hi - lo;
+  if (!extent.allFinite() || !(maxRadius > 0.0)) {
+    // Positions spread beyond a double's range (or not finite at all): no
+    // grid can be laid over them, and brute force gives the same pairs.
+    findPairsBruteForce(position, radius, out);
+    return;
+  }
   const double maxCells = 4.0 * n + 16.0;
   while ((std::floor(extent.x() / cell) + 1.0) * (std::floor(extent.y() / cell) + 1.0) > maxCells)
     cell *= 2.0;

@@ -44,9 +44,16 @@ ContactImpulse computeImpulseAs(const ContactBody& a, const ContactBody& b, cons
   const double invMassSum = a.invMass + b.invMass;
   if (invMassSum <= 0.0) return impulse;  // two immovable bodies exchange nothing
   const ContactVelocity g = contactVelocityAs<M>(a, b, n);
-  // A unit lambdaN changes gn by (1/m_a + 1/m_b); we want gn' = -e gn.
+  // A unit lambdaN changes gn by (1/m_a + 1/m_b); we want gn' = -e gn for
+  // the approach the bodies brought into the step. The part of gn that this
+  // step's forces added (gravity pressing a ball on the floor) is cancelled
+  // but not bounced: bouncing it would return g dt more speed than came in
+  // at every bounce, and a resting elastic ball would hop ever higher.
   const double e = flipIf<M>(Mutation::RestitutionSign) * material.restitution;
-  impulse.normal = -flipIf<M>(Mutation::NormalImpulseSign) * (1.0 + e) * g.normal / invMassSum;
+  const double forced = (b.forcedVelocity - a.forcedVelocity).dot(n);
+  const double brought = g.normal - forced;
+  const double change = brought < 0.0 ? -(1.0 + e) * brought - forced : -g.normal;
+  impulse.normal = flipIf<M>(Mutation::NormalImpulseSign) * change / invMassSum;
   if (material.friction == 0.0) return impulse;  // smooth: no tangential work at all
 
   // A unit lambdaT changes gt by 1/m_a + 1/m_b + r_a^2/J_a + r_b^2/J_b; the

@@ -107,22 +107,24 @@ void World::step() {
   ++stats_.steps;
 }
 
+// Also records what the forces added to each velocity (forcedVelocity_), so
+// that contacts can tell a bounce from a push (docs/physics.md).
 void World::applyForces() {
+  if (!plan_.gravity && !plan_.forces) return;
   const double t = time();
-  if (plan_.gravity)
-    for (Vec2& v : velocity_) v += dt_ * scene_.gravity;
-  if (!plan_.forces) return;
+  forcedVelocity_.assign(position_.size(), dt_ * scene_.gravity);
   for (const ForceDef& f : scene_.forces) {
     if (!f.activeAt(t)) continue;
     const std::size_t i = static_cast<std::size_t>(f.ball);
     if (f.type == ForceType::Pull) {
       // The handout's drag: from the centre O toward the target M, |F| ~ |OM|.
-      velocity_[i] += dt_ * invMass_[i] * f.stiffness * (f.target - position_[i]);
+      forcedVelocity_[i] += dt_ * invMass_[i] * f.stiffness * (f.target - position_[i]);
     } else {
-      velocity_[i] += dt_ * invMass_[i] * f.force;
+      forcedVelocity_[i] += dt_ * invMass_[i] * f.force;
       angularVelocity_[i] += dt_ * invInertia_[i] * f.torque;
     }
   }
+  for (std::size_t i = 0; i < velocity_.size(); ++i) velocity_[i] += forcedVelocity_[i];
 }
 
 void World::findBallContacts(std::vector<BallPair>& out) {
@@ -155,10 +157,12 @@ void World::resolveContacts() {
 // work (every mu = 0) spins are neither read nor written.
 template <Mutation M, bool Tangential>
 void World::resolveContactsAs() {
+  const bool forced = plan_.gravity || plan_.forces;
   auto body = [&](int i) {
     ContactBody c;
     c.velocity = velocity_[i];
     c.invMass = invMass_[i];
+    if (forced) c.forcedVelocity = forcedVelocity_[i];
     if constexpr (Tangential) {
       c.angularVelocity = angularVelocity_[i];
       c.invInertia = invInertia_[i];

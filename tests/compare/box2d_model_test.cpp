@@ -4,14 +4,19 @@
 //
 // Tolerances.
 //  * Model against Box2D: kBox2DTolerance (1e-5 of the case's speed scale).
-//    Box2D rounds every input to float (2^-24 = 6e-8 relative) and every
-//    operation of the solve. Each row of the solve is a projection that sets
-//    one relative velocity to its target, which does not amplify the errors
-//    of the rows before it, so what remains after any number of iterations is
-//    the rounding of the inputs and of the last few rows: a few tens of float
-//    roundings of quantities no larger than the speed scale (the impulses are
-//    effective mass times a velocity change of at most twice the speed
-//    scale). 1e-5 is about 170 float epsilons: a margin of several times that.
+//    Box2D rounds every input to float (relative 2^-24 = 6e-8) and every
+//    operation of the solve. A row of the solve sets one relative velocity to
+//    its target from the current velocities, so a rounding error made in one
+//    row is largely overwritten at the row's next visit instead of piling up;
+//    what remains is the rounding of the inputs and of the last rows, a few
+//    tens of roundings of quantities no larger than the speed scale (the
+//    impulses are effective masses times velocity changes of at most twice the
+//    speed scale), some 1e-6. 1e-5, about 170 times 2^-24, leaves a margin of
+//    several. That does not hold without limit: where friction bounds that
+//    move with the normal impulses keep the iteration from settling (some
+//    corners), float and double part ways after some tens of iterations
+//    (docs/box2d-twin.md). The tests stay at 1, 2 and 8 iterations, and at
+//    100 only for a corner case whose iteration settles.
 //  * Model against the closed form: 1e-12 of the speed scale. Both are double
 //    (the closed form long double, rounded), and the few dozen operations of a
 //    single contact's solve lose at most a few 1e-16 each; mass ratios up to
@@ -20,7 +25,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -152,14 +159,38 @@ TEST(Box2DModel, ReproducesBox2DWithARestitutionThreshold) {
   EXPECT_GT(compared, 1000);
 }
 
+// b2Island::Solve scales a velocity down so that one step moves a body at
+// most b2_maxTranslation (2 m) and turns it at most b2_maxRotation (pi/2).
+// A free ball at 200 m/s and 200 rad/s with dt = 1/60 s would move 3.3 m and
+// turn 3.3 rad: both clamps bind, in the model as in Box2D.
+TEST(Box2DModel, ReproducesBox2DsMotionClamps) {
+  ImpactCase c;
+  c.name = "free ball past Box2D's per-step bounds";
+  c.isolated = false;
+  c.scene.dt = 1.0 / 60.0;
+  BallDef b;
+  b.velocity = {160.0, -120.0};
+  b.angularVelocity = -200.0;
+  c.scene.balls = {b};
+  const Outcome model = runBox2DModel(c, modelSettings(8));
+  EXPECT_LE(measureDiscrepancy(c, model, runBox2D(c, twinSettings(c, 8))).relative, kModelVsBox2D);
+  EXPECT_NEAR(model.balls[0].velocity.norm() * c.scene.dt, 2.0, 1e-12);
+  EXPECT_NEAR(model.balls[0].angularVelocity * c.scene.dt, -0.5 * std::numbers::pi, 1e-12);
+  Box2DModelSettings unclamped = modelSettings(8);
+  unclamped.motionClamps = false;
+  EXPECT_EQ(measureDiscrepancy(c, runBox2DModel(c, unclamped), initialState(c)).relative, 0.0);
+}
+
 // The order in which Box2D creates and solves contacts is replicated: the
 // touching contacts of the twin's b2World contact list come in the order the
 // model predicts, each with the model's accumulated impulses to float
 // precision (measured against the largest impulse of the case).
 TEST(Box2DModel, ContactListAndImpulsesMatchTheTwin) {
   std::vector<ImpactCase> cases = catalogue();
-  for (const Family f : kAllFamilies)
-    for (int i = 0; i < 50; ++i) cases.push_back(randomCase(f, kSeed, i));
+  for (const Family f : kAllFamilies) {
+    const int count = f == Family::MultiContact ? kRandomCasesPerFamily : 50;
+    for (int i = 0; i < count; ++i) cases.push_back(randomCase(f, kSeed, i));
+  }
   for (const int iterations : {1, 2, 8}) {
     for (const ImpactCase& c : cases) {
       reference::Box2DWorld world(c.scene, twinSettings(c, iterations));

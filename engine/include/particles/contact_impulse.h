@@ -19,6 +19,11 @@ struct ContactBody {
   double invMass = 0.0;          // 1/kg; 0 for a wall
   double invInertia = 0.0;       // 1/(kg m^2); 0 for a wall
   double leverArm = 0.0;         // m, distance from the centre to the contact point
+  // m/s, the part of `velocity` that this step's external forces (gravity,
+  // pulls, constant forces) added. Restitution bounces only the approach the
+  // bodies brought into the step; what the forces added is cancelled, not
+  // bounced (docs/physics.md, "Restitution and the step's forces").
+  Vec2 forcedVelocity{0.0, 0.0};
 };
 
 // Relative velocity of b's surface with respect to a's surface at the contact,

@@ -103,6 +103,7 @@ class World {
   std::vector<double> radius_, invMass_, invInertia_;
   std::vector<ContactMaterial> material_;  // per ball, overrides applied
   std::vector<ContactMaterial> wallMaterial_;
+  std::vector<Vec2> forcedVelocity_;  // what this step's forces added to each velocity
 
   // Scratch reused across steps so a step allocates nothing once warm.
   std::vector<BallPair> pairs_;

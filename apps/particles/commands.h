@@ -1,0 +1,24 @@
+// The subcommands of `particles`. Each registers itself on the app; when the
+// command line selects it, its callback stores in `action` what to run, and
+// main() runs that after CLI11 has finished parsing.
+#pragma once
+
+#include <functional>
+
+namespace CLI {
+class App;
+}
+
+namespace particles::cli {
+
+// Exit statuses, the same for every subcommand (docs/cli.md).
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitFailed = 1;    // the simulation diverged, or an I/O or internal error
+inline constexpr int kExitBadInput = 2;  // a bad scene file or bad command-line arguments
+
+// Runs the selected command and returns the exit status.
+using CommandAction = std::function<int()>;
+
+void addRunCommand(CLI::App& app, CommandAction& action);
+
+}  // namespace particles::cli

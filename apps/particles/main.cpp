@@ -1,0 +1,54 @@
+// particles: the command-line front end. main() only registers the
+// subcommands, parses, and maps every CLI11 error to exit status 2.
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+#include "commands.h"
+
+namespace {
+
+constexpr const char* kFooter = R"(Units are SI throughout: metres, kilograms, seconds, radians.
+Exit status: 0 success; 1 the simulation diverged (non-finite state) or an
+I/O error; 2 a bad scene file or bad command-line arguments.
+Errors go to stderr as one line, "particles: error: ...".
+Scene format: docs/scene-format.md. Usage: docs/cli.md.
+)";
+
+// Where to send the user for help after a parse error: the innermost
+// subcommand that was recognised, else the program itself.
+std::string helpHint(const CLI::App& app) {
+  std::string command = "particles";
+  for (const CLI::App* sub : app.get_subcommands()) command += " " + sub->get_name();
+  return " (see '" + command + " --help')";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace particles::cli;
+  CLI::App app{"Simulates 2D spinning balls colliding with friction (impulse solver).",
+               "particles"};
+  // At most one subcommand; "none" is reported after parsing, so that an
+  // unknown word reads "not expected: frob" rather than "subcommand required".
+  app.require_subcommand(0, 1);
+  app.footer(kFooter);
+
+  CommandAction action;
+  addRunCommand(app, action);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success& e) {  // --help: prints help, exits 0
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    // CLI11's own exit codes (105, 106, 109, ...) all mean "bad arguments".
+    std::cerr << "particles: error: " << e.what() << helpHint(app) << '\n';
+    return kExitBadInput;
+  }
+  if (!action) {
+    std::cerr << "particles: error: a subcommand is required, e.g. 'particles run SCENE.json'"
+              << helpHint(app) << '\n';
+    return kExitBadInput;
+  }
+  return action();
+}
