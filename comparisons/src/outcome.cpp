@@ -33,7 +33,7 @@ BodyVelocity fromTruth(const truth::Body& t) {
   return {Vec2(static_cast<double>(t.vx), static_cast<double>(t.vy)), static_cast<double>(t.w)};
 }
 
-enum class TruthVariant { Surface, MidOverlap, NoBounce };
+enum class TruthVariant { Surface, MidOverlap };
 
 std::optional<Outcome> solveTruth(const ImpactCase& c, TruthVariant variant) {
   if (!c.isolated) return std::nullopt;
@@ -48,7 +48,7 @@ std::optional<Outcome> solveTruth(const ImpactCase& c, TruthVariant variant) {
   // between the two surfaces: each lever arm is shortened by half of it. The
   // twin's walls have no skin (docs/box2d-twin.md), so the same holds there.
   const double shorten = variant == TruthVariant::MidOverlap ? 0.5 * frame.overlap : 0.0;
-  const double e = variant == TruthVariant::NoBounce ? 0.0 : m.restitution;
+  const double e = m.restitution;
 
   const truth::Body ta = truthBody(a, before.balls[0], a.radius - shorten);
   truth::Body tb;
@@ -135,10 +135,6 @@ std::optional<Outcome> runTruth(const ImpactCase& c) {
 
 std::optional<Outcome> runTruthMidOverlap(const ImpactCase& c) {
   return solveTruth(c, TruthVariant::MidOverlap);
-}
-
-std::optional<Outcome> runTruthNoBounce(const ImpactCase& c) {
-  return solveTruth(c, TruthVariant::NoBounce);
 }
 
 }  // namespace particles::compare

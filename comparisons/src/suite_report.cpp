@@ -188,7 +188,10 @@ nlohmann::json suiteJson(const SuiteResult& result, CaseRecords records) {
            {{"cases", static_cast<int>(result.cases.size())},
             {"jobs", result.jobs},
             {"seconds", result.seconds},
-            {"cases_per_second", result.casesPerSecond}}},
+            {"cases_per_second", result.casesPerSecond},
+            {"isolated_cases", result.isolatedCases},
+            {"isolated_seconds", result.isolatedSeconds},
+            {"isolated_cases_per_second", result.isolatedCasesPerSecond}}},
           {"summary",
            {{"passed", result.passed()},
             {"cases", static_cast<int>(result.cases.size())},
@@ -209,9 +212,10 @@ std::string suiteMarkdown(const SuiteResult& result) {
      << result.settings.seed << "), " << result.failed() << " failed, " << result.unexplained()
      << " unexplained Box2D discrepancies, mutant catch rate "
      << std::lround(100.0 * result.mutantCatchRate()) << " %.\n\n";
-  md << "Speed: " << std::lround(result.casesPerSecond) << " cases/s end to end (engine, Box2D, "
-     << "closed form and checks) on " << result.jobs << " threads, " << std::fixed
-     << std::setprecision(2) << result.seconds << " s.\n\n";
+  md << "Speed, end to end (engine, Box2D, closed form, checks and attribution) on " << result.jobs
+     << " threads: " << std::lround(result.isolatedCasesPerSecond) << " isolated cases/s ("
+     << result.isolatedCases << " cases), " << std::lround(result.casesPerSecond)
+     << " cases/s overall, " << std::fixed << std::setprecision(2) << result.seconds << " s.\n\n";
   md << std::defaultfloat;
   md << "Discrepancies are maxima over the bodies of |Δv| (m/s) and |Δω| (rad/s). Engine vs "
         "closed form must stay within "

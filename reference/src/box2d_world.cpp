@@ -106,11 +106,37 @@ void addWalls(b2World& world, const SceneDef& scene, const Box2DSettings& settin
 
 }  // namespace
 
+// A world with at most two broad-phase proxies (two balls, or one ball and one
+// wall) can be emptied and refilled instead of rebuilt, bit-identically: the
+// suite's isolated cases are all of that size, and rebuilding would spend
+// most of their Box2D time on the allocator (docs/box2d-twin.md, "Reuse").
+bool Box2DWorld::Impl::canRefill(const SceneDef& scene) const {
+  const std::size_t before = balls.size() + wallFixtures.size();
+  const std::size_t after = scene.balls.size() + scene.walls.size();
+  return world && before <= 2 && after <= 2;
+}
+
+// Destroying the bodies in the reverse of their creation order returns the
+// dynamic tree's free list to 0, 1, 2, ... (each leaf and its parent go back
+// onto it last-in first-out), so the refilled world hands out the same proxy
+// ids as a fresh one, and its pair (fixture A, fixture B) is the same. A new
+// contact has no impulse to warm-start, so the previous case's step ratio
+// (b2World::m_inv_dt0) cannot reach the result.
+void Box2DWorld::Impl::empty() {
+  for (auto it = balls.rbegin(); it != balls.rend(); ++it) world->DestroyBody(*it);
+  if (!wallFixtures.empty()) world->DestroyBody(wallFixtures.front()->GetBody());
+}
+
 void Box2DWorld::Impl::build(const SceneDef& scene) {
   validate(scene, settings);
-  // emplace destroys the old b2World (bodies, fixtures, contacts, broad
-  // phase) and constructs a new one in the same storage: a fresh world.
-  world.emplace(toB2(scene.gravity));
+  if (canRefill(scene)) {
+    empty();
+    world->SetGravity(toB2(scene.gravity));
+  } else {
+    // emplace destroys the old b2World (bodies, fixtures, contacts, broad
+    // phase) and constructs a new one in the same storage: a fresh world.
+    world.emplace(toB2(scene.gravity));
+  }
   world->SetAllowSleeping(false);
   world->SetContinuousPhysics(settings.continuousPhysics);
   balls.clear();

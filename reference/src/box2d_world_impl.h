@@ -23,6 +23,8 @@ struct Box2DWorld::Impl {
   Box2DLimitHits limitHits;
 
   void build(const SceneDef& scene);
+  bool canRefill(const SceneDef& scene) const;
+  void empty();
   void applyForces();
   void countLimitHits();
 };

@@ -35,8 +35,5 @@ std::optional<Outcome> runTruth(const ImpactCase& c);
 // The closed form with the lever arms moved to the middle of the overlap
 // (r - delta/2), as Box2D places its contact point; isolated cases only.
 std::optional<Outcome> runTruthMidOverlap(const ImpactCase& c);
-// The closed form with restitution 0, as Box2D treats an approach slower
-// than its restitution threshold.
-std::optional<Outcome> runTruthNoBounce(const ImpactCase& c);
 
 }  // namespace particles::compare

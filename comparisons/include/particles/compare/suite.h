@@ -57,8 +57,13 @@ struct SuiteResult {
   SuiteSettings settings;
   std::vector<CaseRecord> cases;  // catalogue first, then families in order
   std::vector<MutantRecord> mutants;
-  double seconds = 0.0;  // wall time of the case runs (not the mutants)
+  double seconds = 0.0;  // s, wall time of the case runs (not the mutants)
   double casesPerSecond = 0.0;
+  // The isolated cases (two bodies, one contact: the design card's headline
+  // figure) run first as a phase of their own, timed on their own.
+  int isolatedCases = 0;
+  double isolatedSeconds = 0.0;  // s
+  double isolatedCasesPerSecond = 0.0;
   int jobs = 1;
   int failed() const;
   int unexplained() const;
