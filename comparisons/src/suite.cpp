@@ -17,12 +17,11 @@ reference::Box2DSettings box2dSettingsFor(const ImpactCase& c, const SuiteSettin
 
 // Why the engine's answer to a case is wrong, or "" when it is right: the
 // judgement both the suite and the mutation check use.
-std::string engineVerdict(const ImpactCase& c, const Outcome& engine,
+std::string engineVerdict(const ImpactCase& c, const Outcome& engine, const Invariants& invariants,
                           const std::optional<Outcome>& truth,
                           std::vector<std::string>* violations = nullptr) {
   if (!engine.finite) return "non-finite velocities";
-  std::vector<std::string> broken =
-      violatedInvariants(measureInvariants(c, engine), toleranceFor(Source::Engine));
+  std::vector<std::string> broken = violatedInvariants(invariants, toleranceFor(Source::Engine));
   if (violations) *violations = broken;
   if (truth) {
     const Discrepancy d = measureDiscrepancy(c, engine, *truth);
@@ -75,7 +74,8 @@ CaseRecord evaluateCase(const ImpactCase& c, const SuiteSettings& settings) {
   r.box2dInvariants = measureInvariants(c, r.box2d);
   r.box2dViolations = violatedInvariants(r.box2dInvariants, toleranceFor(Source::Box2D));
   r.engineInvariants = measureInvariants(c, r.engine);
-  const std::string verdict = engineVerdict(c, r.engine, r.truth, &r.engineViolations);
+  const std::string verdict =
+      engineVerdict(c, r.engine, r.engineInvariants, r.truth, &r.engineViolations);
   r.engineOk = verdict.empty();
   if (r.truth) {
     r.engineTruth = measureDiscrepancy(c, r.engine, *r.truth);
@@ -169,7 +169,8 @@ SuiteResult runSuite(const SuiteSettings& settings, const std::function<void(int
           m.mutation = kAllMutations[k];
           for (const ImpactCase* c : pool) {
             ++m.casesRun;
-            m.reason = engineVerdict(*c, runEngine(*c, m.mutation), runTruth(*c));
+            const Outcome mutated = runEngine(*c, m.mutation);
+            m.reason = engineVerdict(*c, mutated, measureInvariants(*c, mutated), runTruth(*c));
             if (!m.reason.empty()) {
               m.caught = true;
               m.caughtBy = c->name;

@@ -11,6 +11,7 @@
 #include "particles/truth/closed_form.h"
 
 #include <array>
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -35,7 +36,7 @@ template <std::size_t N>
 Vector<N> solveLinear(Matrix<N> A, Vector<N> rhs) {
   for (std::size_t i = 0; i < N; ++i) {
     Real scale = 0;
-    for (std::size_t j = 0; j < N; ++j) scale = std::fmax(scale, std::fabs(A[i][j]));
+    for (std::size_t j = 0; j < N; ++j) scale = std::max(scale, std::fabs(A[i][j]));
     if (!(scale > 0)) throw std::runtime_error("truth::solveImpact: empty equation (bug)");
     for (std::size_t j = 0; j < N; ++j) A[i][j] /= scale;
     rhs[i] /= scale;
