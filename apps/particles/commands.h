@@ -13,12 +13,15 @@ namespace particles::cli {
 
 // Exit statuses, the same for every subcommand (docs/cli.md).
 inline constexpr int kExitOk = 0;
-inline constexpr int kExitFailed = 1;    // the simulation diverged, or an I/O or internal error
+inline constexpr int kExitFailed = 1;    // the simulation diverged, the suite failed, or an I/O or
+                                         // internal error
 inline constexpr int kExitBadInput = 2;  // a bad scene file or bad command-line arguments
 
 // Runs the selected command and returns the exit status.
 using CommandAction = std::function<int()>;
 
-void addRunCommand(CLI::App& app, CommandAction& action);
+void addRunCommand(CLI::App& app, CommandAction& action);      // run_command.cpp
+void addCompareCommand(CLI::App& app, CommandAction& action);  // compare_command.cpp
+void addSuiteCommand(CLI::App& app, CommandAction& action);    // suite_command.cpp
 
 }  // namespace particles::cli

@@ -7,11 +7,16 @@
 
 namespace {
 
-constexpr const char* kFooter = R"(Units are SI throughout: metres, kilograms, seconds, radians.
-Exit status: 0 success; 1 the simulation diverged (non-finite state) or an
-I/O error; 2 a bad scene file or bad command-line arguments.
+constexpr const char* kFooter = R"(Commands:
+  particles run SCENE.json [--engine engine|box2d]   simulate, print the final state
+  particles compare SCENE.json...                     engine vs Box2D, event by event
+  particles suite [--cases N] [--report DIR]          the comparison suite and its report
+'particles COMMAND --help' explains each command's options and output.
+Units are SI throughout: metres, kilograms, seconds, radians.
+Exit status: 0 success; 1 the simulation diverged (non-finite state), the
+suite failed, or an I/O error; 2 a bad scene file or bad command-line arguments.
 Errors go to stderr as one line, "particles: error: ...".
-Scene format: docs/scene-format.md. Usage: docs/cli.md.
+Docs: docs/cli.md (usage), docs/scene-format.md, docs/report-format.md.
 )";
 
 // Where to send the user for help after a parse error: the innermost
@@ -26,8 +31,10 @@ std::string helpHint(const CLI::App& app) {
 
 int main(int argc, char** argv) {
   using namespace particles::cli;
-  CLI::App app{"Simulates 2D spinning balls colliding with friction (impulse solver).",
-               "particles"};
+  CLI::App app{
+      "Simulates 2D spinning balls colliding with friction (impulse solver) and checks the "
+      "solver against closed forms and Box2D 2.4.1.",
+      "particles"};
   // At most one subcommand; "none" is reported after parsing, so that an
   // unknown word reads "not expected: frob" rather than "subcommand required".
   app.require_subcommand(0, 1);
@@ -35,6 +42,8 @@ int main(int argc, char** argv) {
 
   CommandAction action;
   addRunCommand(app, action);
+  addCompareCommand(app, action);
+  addSuiteCommand(app, action);
 
   try {
     app.parse(argc, argv);

@@ -1,11 +1,18 @@
-// particles run SCENE.json: load, simulate, print the final state.
+// particles run SCENE.json: load, simulate in the engine or in its Box2D
+// twin, print the final state.
 #include <CLI/CLI.hpp>
 #include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <stdexcept>
+#include <type_traits>
+#include <vector>
 
+#include "cli_common.h"
 #include "commands.h"
+#include "particles/reference/box2d_range.h"
+#include "particles/reference/box2d_world.h"
 #include "particles/scenefile.h"
 #include "particles/world.h"
 
@@ -13,16 +20,24 @@ namespace particles::cli {
 namespace {
 
 constexpr const char* kSummary =
-    "Load SCENE.json, run round(duration / dt) fixed steps, print the final state as JSON";
+    "Load SCENE.json, run round(duration / dt) fixed steps in the engine or in Box2D, print the "
+    "final state as JSON";
 
-constexpr const char* kFooter = R"(Output (stdout): the final state, one line of JSON,
+constexpr const char* kFooter = R"(Engines (--engine):
+  engine  the hand-written impulse solver (double precision), the default
+  box2d   the scene's Box2D 2.4.1 twin (float precision; docs/box2d-twin.md),
+          stepped with --velocity-iterations and --position-iterations.
+          Each way the scene leaves Box2D's range is a warning on stderr,
+          "particles: warning: outside Box2D's range: ...", not an error.
+Output (stdout): the final state, one line of JSON, the same for both engines,
   {"time": T, "balls": [{"position": [x, y], "velocity": [vx, vy],
                          "angle": a, "angular_velocity": w}, ...]}
 with the balls in the file's order. Units: s, m, m/s, rad, rad/s.
 CSV (--csv): header t,id,x,y,angle,vx,vy,omega; one row per ball (id = index in
 the file) at t = 0 and after every N-th step; shortest round-trip numbers.
 Exit status:
-  0  success (a warning on stderr if the contact-pass bound was reached)
+  0  success (warnings on stderr: the engine's contact-pass bound was reached,
+     the scene is outside Box2D's range, Box2D clamped a speed or spin)
   1  the simulation diverged (non-finite state): nothing on stdout
   2  a bad scene file or bad arguments: one line on stderr,
      "particles: error: FILE: JSON_PATH: problem"
@@ -37,11 +52,44 @@ struct RunOptions {
   std::optional<double> dt, duration;
   std::string csv;
   long long csvEvery = 1;
+  std::string engine = "engine";
+  Box2DIterations iterations;
 };
 
-void error(const std::string& message) {
-  std::cerr << "particles: error: " << message << '\n';
+// ---- Reading a state from either world -----------------------------------
+// Box2DWorld reads like World (ballCount, ball, time); scenefile's output
+// helpers take a World, or a time and the balls, so a Box2D state is copied
+// into a vector first. Both paths print through the same code.
+
+std::vector<BallState> ballsOf(const reference::Box2DWorld& world) {
+  std::vector<BallState> balls;
+  balls.reserve(world.ballCount());
+  for (std::size_t i = 0; i < world.ballCount(); ++i) balls.push_back(world.ball(i));
+  return balls;
 }
+
+bool finiteState(const World& world) {
+  return allFinite(world);
+}
+bool finiteState(const reference::Box2DWorld& world) {
+  return allFinite(ballsOf(world));
+}
+
+void writeRows(CsvTrajectoryWriter& csv, const World& world) {
+  csv.write(world);
+}
+void writeRows(CsvTrajectoryWriter& csv, const reference::Box2DWorld& world) {
+  csv.write(world.time(), ballsOf(world));
+}
+
+std::string stateText(const World& world) {
+  return finalStateText(world);
+}
+std::string stateText(const reference::Box2DWorld& world) {
+  return finalStateText(world.time(), ballsOf(world));
+}
+
+// ---- The run ----------------------------------------------------------------
 
 // The scene with the command line's overrides, validated like the file.
 SceneDef prepareScene(const RunOptions& o) {
@@ -59,26 +107,84 @@ SceneDef prepareScene(const RunOptions& o) {
 // Steps the world, writing CSV rows at t = 0 and after every `every`-th step.
 // Returns the step after which a non-finite state was seen, 0 if none was:
 // checked at each CSV row, every kFiniteCheckInterval steps and at the end.
-long long simulate(World& world, long long steps, CsvTrajectoryWriter* csv, long long every) {
-  if (csv) csv->write(world);
+template <typename W>
+long long simulate(W& world, long long steps, CsvTrajectoryWriter* csv, long long every) {
+  if (csv) writeRows(*csv, world);
   for (long long k = 1; k <= steps; ++k) {
     world.step();
     const bool row = csv != nullptr && k % every == 0;
-    if ((row || k % kFiniteCheckInterval == 0 || k == steps) && !allFinite(world)) return k;
-    if (row) csv->write(world);
+    if ((row || k % kFiniteCheckInterval == 0 || k == steps) && !finiteState(world)) return k;
+    if (row) writeRows(*csv, world);
   }
   return 0;
 }
 
-// The run is deterministic, so replaying it step by step finds the first
-// non-finite step exactly, at no cost to runs that stay finite.
-long long firstNonFiniteStep(const SceneDef& scene, long long detectedAt) {
-  World replay(scene);
+// Both engines are deterministic, so replaying the run step by step finds
+// the first non-finite step exactly, at no cost to runs that stay finite.
+template <typename W>
+long long firstNonFiniteStep(W replay, long long detectedAt) {
   for (long long k = 1; k < detectedAt; ++k) {
     replay.step();
-    if (!allFinite(replay)) return k;
+    if (!finiteState(replay)) return k;
   }
   return detectedAt;
+}
+
+void warnPassLimit(const World& world) {
+  const StepStats& stats = world.stats();
+  if (stats.passLimitHits > 0)
+    printWarning("the contact-pass bound (" + std::to_string(world.scene().solver.contactPasses) +
+                 ") was reached in " + std::to_string(stats.passLimitHits) +
+                 " steps; velocities may still approach there");
+}
+
+void warnClamps(const reference::Box2DWorld& world) {
+  const reference::Box2DLimitHits& hits = world.limitHits();
+  if (hits.translation > 0)
+    printWarning("Box2D clamped a ball's speed to 2 m per step (b2_maxTranslation) in " +
+                 std::to_string(hits.translation) + " steps");
+  if (hits.rotation > 0)
+    printWarning("Box2D clamped a ball's spin to pi/2 per step (b2_maxRotation) in " +
+                 std::to_string(hits.rotation) + " steps");
+}
+
+// Runs `world` to the end, then prints its final state; make() builds a
+// fresh copy of it for the replay after a divergence.
+template <typename W, typename Make>
+int execute(const RunOptions& o, const SceneDef& scene, W& world, const Make& make) {
+  std::ofstream csvFile;
+  std::optional<CsvTrajectoryWriter> csv;
+  if (!o.csv.empty()) {
+    csvFile.open(o.csv, std::ios::binary | std::ios::trunc);
+    if (!csvFile) {
+      printError("--csv: cannot open '" + o.csv + "' for writing");
+      return kExitBadInput;
+    }
+    csv.emplace(csvFile);
+  }
+
+  const long long diverged = simulate(world, scene.stepCount(), csv ? &*csv : nullptr, o.csvEvery);
+  if (diverged > 0) {
+    const long long k = firstNonFiniteStep(make(), diverged);
+    printError(o.scene + ": the simulation diverged (non-finite state) at step " +
+               std::to_string(k) + " (t = " + formatDouble(static_cast<double>(k) * scene.dt) +
+               " s)");
+    return kExitFailed;
+  }
+  if (csv) {
+    csvFile.close();
+    if (!csvFile) {
+      printError("--csv: error writing '" + o.csv + "'");
+      return kExitFailed;
+    }
+  }
+
+  std::cout << stateText(world) << '\n' << std::flush;
+  if constexpr (std::is_same_v<W, World>)
+    warnPassLimit(world);
+  else
+    warnClamps(world);
+  return std::cout ? kExitOk : kExitFailed;
 }
 
 int run(const RunOptions& o) {
@@ -86,44 +192,27 @@ int run(const RunOptions& o) {
   try {
     scene = prepareScene(o);
   } catch (const SceneError& e) {
-    error(e.what());
+    printError(e.what());
     return kExitBadInput;
   }
 
-  std::ofstream csvFile;
-  std::optional<CsvTrajectoryWriter> csv;
-  if (!o.csv.empty()) {
-    csvFile.open(o.csv, std::ios::binary | std::ios::trunc);
-    if (!csvFile) {
-      error("--csv: cannot open '" + o.csv + "' for writing");
+  if (o.engine == "box2d") {
+    reference::Box2DSettings settings = reference::Box2DSettings::forScene(scene);
+    settings.velocityIterations = o.iterations.velocity;
+    settings.positionIterations = o.iterations.position;
+    for (const reference::RangeIssue& issue : reference::checkBox2DRange(scene, settings))
+      printWarning("outside Box2D's range: " + issue.message);
+    std::optional<reference::Box2DWorld> world;
+    try {
+      world.emplace(scene, settings);
+    } catch (const std::invalid_argument& e) {  // not expected after the loader's checks
+      printError(o.scene + ": Box2D cannot represent this scene: " + e.what());
       return kExitBadInput;
     }
-    csv.emplace(csvFile);
+    return execute(o, scene, *world, [&] { return reference::Box2DWorld(scene, settings); });
   }
-
   World world(scene);
-  const long long diverged = simulate(world, scene.stepCount(), csv ? &*csv : nullptr, o.csvEvery);
-  if (diverged > 0) {
-    const long long k = firstNonFiniteStep(scene, diverged);
-    error(o.scene + ": the simulation diverged (non-finite state) at step " + std::to_string(k) +
-          " (t = " + formatDouble(static_cast<double>(k) * scene.dt) + " s)");
-    return kExitFailed;
-  }
-  if (csv) {
-    csvFile.close();
-    if (!csvFile) {
-      error("--csv: error writing '" + o.csv + "'");
-      return kExitFailed;
-    }
-  }
-
-  std::cout << finalStateText(world) << '\n' << std::flush;
-  const StepStats& stats = world.stats();
-  if (stats.passLimitHits > 0)
-    std::cerr << "particles: warning: the contact-pass bound (" << scene.solver.contactPasses
-              << ") was reached in " << stats.passLimitHits
-              << " steps; velocities may still approach there\n";
-  return std::cout ? kExitOk : kExitFailed;
+  return execute(o, scene, world, [&] { return World(scene); });
 }
 
 }  // namespace
@@ -135,6 +224,11 @@ void addRunCommand(CLI::App& app, CommandAction& action) {
   cmd->add_option("scene", o->scene, "Scene file, JSON (docs/scene-format.md)")
       ->required()
       ->type_name("SCENE.json");
+  cmd->add_option("--engine", o->engine,
+                  "Which solver runs the scene: engine (the impulse solver) or box2d (its "
+                  "Box2D 2.4.1 twin); default engine")
+      ->type_name("NAME")
+      ->check(CLI::IsMember({"engine", "box2d"}));
   auto* dt =
       cmd->add_option("--dt", "Time step, s, > 0 (overrides the file's \"dt\"; default 0.001)")
           ->type_name("S");
@@ -147,14 +241,21 @@ void addRunCommand(CLI::App& app, CommandAction& action) {
   cmd->add_option("--csv-every", o->csvEvery, "CSV rows after every N-th step, integer >= 1")
       ->type_name("N")
       ->default_val(1);
-  cmd->callback([o, dt, duration, &action] {
+  const Box2DIterationOptions iterations =
+      addBox2DIterationOptions(*cmd, o->iterations, " (with --engine box2d only)");
+  cmd->callback([o, dt, duration, iterations, &action] {
+    if (o->engine != "box2d") {
+      for (const CLI::Option* opt : {iterations.velocity, iterations.position})
+        if (opt->count() > 0)
+          throw CLI::ValidationError(opt->get_name(), "applies only to --engine box2d");
+    }
     if (dt->count() > 0) o->dt = dt->as<double>();
     if (duration->count() > 0) o->duration = duration->as<double>();
     action = [o] {
       try {
         return run(*o);
       } catch (const std::exception& e) {  // not expected: the scene was validated
-        error(std::string("internal error: ") + e.what());
+        printError(std::string("internal error: ") + e.what());
         return kExitFailed;
       }
     };

@@ -44,7 +44,12 @@ MatchedEvent match(const SceneDef& scene, const CollisionEvent& e, const Collisi
     const double r = scene.balls[e.bodies[k].ball].radius;
     const EventBody& x = e.bodies[k];
     const EventBody& y = b.bodies[k];
-    scale = std::max(scale, x.before.velocity.norm() + std::abs(x.before.angularVelocity) * r);
+        // The scale is the bodies' speeds before and after (in both engines), so
+    // that an event that starts a resting ball moving has a finite relative
+    // difference.
+    for (const EventBody* s : {&x, &y})
+      for (const BodyVelocity* v : {&s->before, &s->after})
+        scale = std::max(scale, v->velocity.norm() + std::abs(v->angularVelocity) * r);
     const double dv = (x.after.velocity - y.after.velocity).norm();
     const double dw = std::abs(x.after.angularVelocity - y.after.angularVelocity);
     m.velocityDifference = std::max(m.velocityDifference, dv);

@@ -19,20 +19,25 @@ CsvTrajectoryWriter::CsvTrajectoryWriter(std::ostream& out) : out_(out) {
 
 void CsvTrajectoryWriter::write(const World& world) {
   const double t = world.time();
-  for (std::size_t i = 0; i < world.ballCount(); ++i) {
-    const BallState b = world.ball(i);
-    line_.clear();
-    append(line_, t);
+  for (std::size_t i = 0; i < world.ballCount(); ++i) writeRow(t, i, world.ball(i));
+}
+
+void CsvTrajectoryWriter::write(double time, std::span<const BallState> balls) {
+  for (std::size_t i = 0; i < balls.size(); ++i) writeRow(time, i, balls[i]);
+}
+
+void CsvTrajectoryWriter::writeRow(double time, std::size_t id, const BallState& b) {
+  line_.clear();
+  append(line_, time);
+  line_ += ',';
+  line_ += std::to_string(id);
+  for (double x : {b.position.x(), b.position.y(), b.angle, b.velocity.x(), b.velocity.y(),
+                   b.angularVelocity}) {
     line_ += ',';
-    line_ += std::to_string(i);
-    for (double x : {b.position.x(), b.position.y(), b.angle, b.velocity.x(), b.velocity.y(),
-                     b.angularVelocity}) {
-      line_ += ',';
-      append(line_, x);
-    }
-    line_ += '\n';
-    out_ << line_;
+    append(line_, x);
   }
+  line_ += '\n';
+  out_ << line_;
 }
 
 }  // namespace particles

@@ -1,5 +1,6 @@
 #include <charconv>
 #include <cmath>
+#include <vector>
 
 #include "particles/scene_output.h"
 
@@ -8,38 +9,59 @@ namespace particles {
 namespace {
 
 // Built as ordered_json so that the printed keys keep the documented order.
-nlohmann::ordered_json finalState(const World& world) {
+nlohmann::ordered_json finalState(double time, std::span<const BallState> states) {
   nlohmann::ordered_json balls = nlohmann::ordered_json::array();
-  for (std::size_t i = 0; i < world.ballCount(); ++i) {
-    const BallState b = world.ball(i);
+  for (const BallState& b : states) {
     balls.push_back({{"position", {b.position.x(), b.position.y()}},
                      {"velocity", {b.velocity.x(), b.velocity.y()}},
                      {"angle", b.angle},
                      {"angular_velocity", b.angularVelocity}});
   }
   nlohmann::ordered_json state;
-  state["time"] = world.time();
+  state["time"] = time;
   state["balls"] = std::move(balls);
   return state;
+}
+
+bool finite(const BallState& b) {
+  return b.position.allFinite() && b.velocity.allFinite() && std::isfinite(b.angle) &&
+         std::isfinite(b.angularVelocity);
+}
+
+std::vector<BallState> ballsOf(const World& world) {
+  std::vector<BallState> balls;
+  balls.reserve(world.ballCount());
+  for (std::size_t i = 0; i < world.ballCount(); ++i) balls.push_back(world.ball(i));
+  return balls;
 }
 
 }  // namespace
 
 nlohmann::json finalStateJson(const World& world) {
-  return finalState(world);
+  return finalState(world.time(), ballsOf(world));
 }
 
 std::string finalStateText(const World& world) {
-  return finalState(world).dump();
+  return finalState(world.time(), ballsOf(world)).dump();
+}
+
+nlohmann::json finalStateJson(double time, std::span<const BallState> balls) {
+  return finalState(time, balls);
+}
+
+std::string finalStateText(double time, std::span<const BallState> balls) {
+  return finalState(time, balls).dump();
 }
 
 bool allFinite(const World& world) {
-  for (std::size_t i = 0; i < world.ballCount(); ++i) {
-    const BallState b = world.ball(i);
-    if (!b.position.allFinite() || !b.velocity.allFinite() || !std::isfinite(b.angle) ||
-        !std::isfinite(b.angularVelocity))
-      return false;
-  }
+  for (std::size_t i = 0; i < world.ballCount(); ++i)
+    if (!finite(world.ball(i))) return false;
+  return true;
+}
+
+bool allFinite(std::span<const BallState> balls) {
+  for (const BallState& b : balls)
+    if (!finite(b)) return false;
   return true;
 }
 

@@ -82,7 +82,7 @@ struct SolverSettings {
   int correctionPasses = 8;
   // Ball count from which the uniform grid replaces brute-force pair finding.
   // Measured with bench/broad_phase_bench (docs/performance.md). 0 = always grid.
-  int gridThreshold = 64;
+  int gridThreshold = 48;
   // A deliberately wrong solver, for the comparison suite's mutation check
   // only. Scene files cannot set it.
   Mutation mutation = Mutation::None;

@@ -36,7 +36,7 @@ struct MatchedEvent {
   CollisionEvent engine, box2d;
   double velocityDifference = 0.0;  // m/s, largest |dv| after, over the bodies
   double spinDifference = 0.0;      // rad/s, largest |dw| after
-  double relative = 0.0;            // the larger of both, over the speed scale before
+  double relative = 0.0;  // the larger of both, over the bodies' largest speed before or after
 };
 
 struct SceneComparison {

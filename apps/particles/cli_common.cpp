@@ -1,0 +1,69 @@
+#include "cli_common.h"
+
+#include <CLI/CLI.hpp>
+#include <charconv>
+#include <cstdint>
+#include <iostream>
+
+namespace particles::cli {
+
+void printError(const std::string& message) {
+  std::cerr << "particles: error: " << message << '\n';
+}
+
+void printWarning(const std::string& message) {
+  std::cerr << "particles: warning: " << message << '\n';
+}
+
+CLI::Validator integerInRange(long long min, long long max) {
+  const std::string want =
+      "must be an integer >= " + std::to_string(min) + " and <= " + std::to_string(max) + ", got ";
+  return CLI::Validator(
+      [min, max, want](std::string& text) -> std::string {
+        long long value = 0;
+        const char* end = text.data() + text.size();
+        const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+        if (ec != std::errc() || ptr != end || value < min || value > max) return want + text;
+        return "";
+      },
+      "");
+}
+
+CLI::Validator unsigned64() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        std::uint64_t value = 0;
+        const char* end = text.data() + text.size();
+        const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+        if (ec != std::errc() || ptr != end)
+          return "must be an integer >= 0 and < 2^64, got " + text;
+        return "";
+      },
+      "");
+}
+
+Box2DIterationOptions addBox2DIterationOptions(CLI::App& cmd, Box2DIterations& iterations,
+                                               const std::string& scope) {
+  // Box2D's own loops accept any count; 0 disables a solver, which
+  // checkBox2DRange reports as leaving Box2D's range. The upper bound only
+  // keeps the count an int.
+  constexpr long long kMax = 1000000;
+  Box2DIterationOptions o;
+  o.velocity = cmd.add_option("--velocity-iterations", iterations.velocity,
+                              "Box2D velocity-solver iterations per step, integer 0 to 1000000 "
+                              "(Box2D recommends 8; fewer than 2 leaves Box2D's range)" +
+                                  scope)
+                   ->type_name("N")
+                   ->default_val(iterations.velocity)
+                   ->check(integerInRange(0, kMax));
+  o.position = cmd.add_option("--position-iterations", iterations.position,
+                              "Box2D position-solver iterations per step, integer 0 to 1000000 "
+                              "(Box2D recommends 3; 0 never corrects overlaps)" +
+                                  scope)
+                   ->type_name("N")
+                   ->default_val(iterations.position)
+                   ->check(integerInRange(0, kMax));
+  return o;
+}
+
+}  // namespace particles::cli
