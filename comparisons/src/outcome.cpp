@@ -8,6 +8,7 @@
 
 #include "case_geometry.h"
 #include "particles/world.h"
+#include "world_velocities.h"
 
 namespace particles::compare {
 namespace {
@@ -96,11 +97,7 @@ Outcome runEngine(const ImpactCase& c, Mutation mutation) {
     world ? world->reset(scene) : void(world.emplace(scene));
   }
   world->step();
-  Outcome o;
-  for (std::size_t i = 0; i < world->ballCount(); ++i) {
-    const BallState s = world->ball(i);
-    o.balls.push_back({s.velocity, s.angularVelocity});
-  }
+  Outcome o{detail::velocitiesOf(*world), true};
   o.finite = allFinite(o);
   return o;
 }
@@ -109,22 +106,13 @@ Outcome runBox2D(const ImpactCase& c, const reference::Box2DSettings& settings) 
   // One world per thread, rebuilt in place for each case: reset() is
   // bit-identical to a fresh world and saves its allocations.
   thread_local std::optional<reference::Box2DWorld> world;
-  if (world && world->settings().dt == settings.dt &&
-      world->settings().velocityIterations == settings.velocityIterations &&
-      world->settings().positionIterations == settings.positionIterations &&
-      world->settings().noSlipFriction == settings.noSlipFriction &&
-      world->settings().continuousPhysics == settings.continuousPhysics &&
-      world->settings().restitutionThreshold == settings.restitutionThreshold) {
+  if (world && world->settings() == settings) {
     world->reset(c.scene);
   } else {
     world.emplace(c.scene, settings);
   }
   world->step();
-  Outcome o;
-  for (std::size_t i = 0; i < world->ballCount(); ++i) {
-    const BallState s = world->ball(i);
-    o.balls.push_back({s.velocity, s.angularVelocity});
-  }
+  Outcome o{detail::velocitiesOf(*world), true};
   o.finite = allFinite(o);
   return o;
 }

@@ -8,21 +8,12 @@
 
 #include "particles/reference/box2d_range.h"
 #include "particles/reference/box2d_world.h"
+#include "world_velocities.h"
 
 namespace particles::compare {
 namespace {
 
 using Key = std::tuple<int, int, bool>;  // (a, b, wall)
-
-template <typename W>
-std::vector<BodyVelocity> velocities(const W& world) {
-  std::vector<BodyVelocity> v;
-  for (std::size_t i = 0; i < world.ballCount(); ++i) {
-    const BallState s = world.ball(i);
-    v.push_back({s.velocity, s.angularVelocity});
-  }
-  return v;
-}
 
 template <typename W>
 CollisionEvent makeEvent(int a, int b, bool wall, long long step, double dt,
@@ -44,7 +35,7 @@ MatchedEvent match(const SceneDef& scene, const CollisionEvent& e, const Collisi
     const double r = scene.balls[e.bodies[k].ball].radius;
     const EventBody& x = e.bodies[k];
     const EventBody& y = b.bodies[k];
-        // The scale is the bodies' speeds before and after (in both engines), so
+    // The scale is the bodies' speeds before and after (in both engines), so
     // that an event that starts a resting ball moving has a finite relative
     // difference.
     for (const EventBody* s : {&x, &y})
@@ -98,8 +89,8 @@ SceneComparison compareScene(const SceneDef& scene, const std::string& label,
   std::map<Key, std::vector<CollisionEvent>> engineEvents, box2dEvents;
 
   for (long long step = 0; step < out.steps; ++step) {
-    const std::vector<BodyVelocity> engineBefore = velocities(engine);
-    const std::vector<BodyVelocity> box2dBefore = velocities(box2d);
+    const std::vector<BodyVelocity> engineBefore = detail::velocitiesOf(engine);
+    const std::vector<BodyVelocity> box2dBefore = detail::velocitiesOf(box2d);
     engine.step();
     box2d.step();
     for (const ImpactEvent& i : engine.impacts())

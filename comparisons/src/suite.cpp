@@ -136,8 +136,9 @@ SuiteResult runSuite(const SuiteSettings& settings, const std::function<void(int
     parallelFor(result.isolatedCases, result.jobs, run, &done);
     result.isolatedSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        parallelFor(total - result.isolatedCases, result.jobs,
-                [&](int k) { run(result.isolatedCases + k); }, &done);
+    parallelFor(
+        total - result.isolatedCases, result.jobs, [&](int k) { run(result.isolatedCases + k); },
+        &done);
     // Timed here, not after the join: the progress loop below sleeps.
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   });
@@ -147,7 +148,7 @@ SuiteResult runSuite(const SuiteSettings& settings, const std::function<void(int
   }
   runner.join();
   if (progress) progress(total, total);
-    result.casesPerSecond = result.seconds > 0.0 ? total / result.seconds : 0.0;
+  result.casesPerSecond = result.seconds > 0.0 ? total / result.seconds : 0.0;
   result.isolatedCasesPerSecond =
       result.isolatedSeconds > 0.0 ? result.isolatedCases / result.isolatedSeconds : 0.0;
 

@@ -38,6 +38,8 @@ struct Box2DSettings {
   // tests set it to show what the stock value does.
   double restitutionThreshold = 0.0;
 
+  bool operator==(const Box2DSettings&) const = default;
+
   // Settings with dt = scene.dt and everything else at its default.
   static Box2DSettings forScene(const SceneDef& scene);
 };
