@@ -90,7 +90,10 @@ void measureIsolated(const ImpactCase& c, const Outcome& before, const Outcome& 
 
 Invariants measureInvariants(const ImpactCase& c, const Outcome& after) {
   const SceneDef& s = c.scene;
-  const Outcome before = initialState(c);
+  // Reused per thread: this runs for every source of every case, and the
+  // allocation would cost more than the arithmetic.
+  thread_local Outcome before;
+  initialState(c, before);
   Invariants inv;
   inv.momentum = inv.angularMomentum = inv.restitution = inv.noSlip = inv.coulomb = kNotApplicable;
 

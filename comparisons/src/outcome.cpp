@@ -39,7 +39,8 @@ enum class TruthVariant { Surface, MidOverlap };
 std::optional<Outcome> solveTruth(const ImpactCase& c, TruthVariant variant) {
   if (!c.isolated) return std::nullopt;
   const SceneDef& s = c.scene;
-  const Outcome before = initialState(c);
+  thread_local Outcome before;  // reused per thread: no allocation per case
+  initialState(c, before);
   const BallDef& a = s.balls[0];
   const detail::ContactFrame frame = detail::contactFrame(c);
   const ContactMaterial m = detail::contactMaterial(c);
@@ -80,9 +81,15 @@ std::string_view sourceName(Source s) {
   return "unknown";
 }
 
+void initialState(const ImpactCase& c, Outcome& out) {
+  out.balls.clear();
+  for (const BallDef& b : c.scene.balls) out.balls.push_back({b.velocity, b.angularVelocity});
+  out.finite = true;
+}
+
 Outcome initialState(const ImpactCase& c) {
   Outcome o;
-  for (const BallDef& b : c.scene.balls) o.balls.push_back({b.velocity, b.angularVelocity});
+  initialState(c, o);
   return o;
 }
 

@@ -27,6 +27,8 @@ struct Outcome {
 
 // The pre-impact velocities of a case.
 Outcome initialState(const ImpactCase& c);
+// The same into `out`, reusing its storage.
+void initialState(const ImpactCase& c, Outcome& out);
 
 Outcome runEngine(const ImpactCase& c, Mutation mutation = Mutation::None);
 Outcome runBox2D(const ImpactCase& c, const reference::Box2DSettings& settings);
