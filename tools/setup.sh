@@ -6,6 +6,8 @@
 #   bash tools/setup.sh            # Release build in ./build
 #   BUILD_DIR=out bash tools/setup.sh
 #   CI=true bash tools/setup.sh    # also -Werror
+#   BUILD_DIR=build-asan BUILD_TYPE=Debug CMAKE_EXTRA_ARGS=-DPARTICLES_SANITIZE=ON \
+#     bash tools/setup.sh          # ASan + UBSan at -O1 (what .ci/run does second)
 set -euo pipefail
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -16,6 +18,7 @@ packages=(
   build-essential cmake pkg-config
   libeigen3-dev nlohmann-json3-dev libcli11-dev libbox2d-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  libsfml-dev xvfb xauth fonts-dejavu-core  # particles view, and its screenshot tests headless
 )
 
 missing=()
@@ -32,5 +35,8 @@ fi
 
 werror=OFF
 [ "${CI:-}" = "true" ] && werror=ON
-cmake -S "$here" -B "$build_dir" -DCMAKE_BUILD_TYPE="$build_type" -DPARTICLES_WERROR="$werror" >/dev/null
+# CMAKE_EXTRA_ARGS: more -D options, word-split (.ci/run's sanitizer build).
+# shellcheck disable=SC2086
+cmake -S "$here" -B "$build_dir" -DCMAKE_BUILD_TYPE="$build_type" -DPARTICLES_WERROR="$werror" \
+  ${CMAKE_EXTRA_ARGS:-} >/dev/null
 cmake --build "$build_dir" -j"$(nproc)"

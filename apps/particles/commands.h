@@ -23,5 +23,8 @@ using CommandAction = std::function<int()>;
 void addRunCommand(CLI::App& app, CommandAction& action);      // run_command.cpp
 void addCompareCommand(CLI::App& app, CommandAction& action);  // compare_command.cpp
 void addSuiteCommand(CLI::App& app, CommandAction& action);    // suite_command.cpp
+void addMergeCommand(CLI::App& app, CommandAction& action);    // merge_command.cpp
+// viewer/cli/view_command.cpp, or view_unavailable.cpp in a build without SFML
+void addViewCommand(CLI::App& app, CommandAction& action);
 
 }  // namespace particles::cli

@@ -11,6 +11,7 @@ constexpr const char* kFooter = R"(Commands:
   particles run SCENE.json [--engine engine|box2d]   simulate, print the final state
   particles compare SCENE.json...                     engine vs Box2D, event by event
   particles suite [--cases N] [--report DIR]          the comparison suite and its report
+  particles merge DIR... [--report DIR]               combine the reports of suite --shard
 'particles COMMAND --help' explains each command's options and output.
 Units are SI throughout: metres, kilograms, seconds, radians.
 Exit status: 0 success; 1 the simulation diverged (non-finite state), the
@@ -44,6 +45,8 @@ int main(int argc, char** argv) {
   addRunCommand(app, action);
   addCompareCommand(app, action);
   addSuiteCommand(app, action);
+  addMergeCommand(app, action);
+  addViewCommand(app, action);
 
   try {
     app.parse(argc, argv);

@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -14,6 +15,7 @@
 #include "particles/reference/box2d_range.h"
 #include "particles/reference/box2d_world.h"
 #include "particles/scenefile.h"
+#include "particles/state_hash.h"
 #include "particles/world.h"
 
 namespace particles::cli {
@@ -41,8 +43,13 @@ Exit status:
   1  the simulation diverged (non-finite state): nothing on stdout
   2  a bad scene file or bad arguments: one line on stderr,
      "particles: error: FILE: JSON_PATH: problem"
+     (also more than --max-steps steps: nothing is run)
 Scene format (keys, units, defaults, checks): docs/scene-format.md.
 )";
+
+// Default of --max-steps: about 10 s for one ball, minutes for a few dozen;
+// more is almost always a unit slip in dt or duration (docs/cli.md).
+constexpr long long kDefaultMaxSteps = 100000000;
 
 // How often the run checks, between CSV rows, that the state is still finite.
 constexpr long long kFiniteCheckInterval = 1000;
@@ -54,6 +61,8 @@ struct RunOptions {
   long long csvEvery = 1;
   std::string engine = "engine";
   Box2DIterations iterations;
+  long long maxSteps = kDefaultMaxSteps;  // 0: no limit
+  bool hash = false;
 };
 
 // ---- Reading a state from either world -----------------------------------
@@ -82,6 +91,13 @@ void writeRows(CsvTrajectoryWriter& csv, const reference::Box2DWorld& world) {
   csv.write(world.time(), ballsOf(world));
 }
 
+std::uint64_t stateHashOf(const World& world) {
+  return stateHash(world);
+}
+std::uint64_t stateHashOf(const reference::Box2DWorld& world) {
+  return stateHash(ballsOf(world));
+}
+
 std::string stateText(const World& world) {
   return finalStateText(world);
 }
@@ -101,6 +117,12 @@ SceneDef prepareScene(const RunOptions& o) {
   if (o.dt) scene.dt = *o.dt;
   if (o.duration) scene.duration = *o.duration;
   if (o.dt || o.duration) checkStepCount(scene.duration, scene.dt, "--dt/--duration");
+  // A guard, not a check of the scene: 1e12 steps are legal but would run
+  // for days without a word.
+  if (o.maxSteps > 0 && scene.stepCount() > o.maxSteps)
+    throw SceneError(o.scene + ": duration / dt = " + std::to_string(scene.stepCount()) +
+                     " steps, more than --max-steps " + std::to_string(o.maxSteps) +
+                     "; raise --max-steps, or 0 for no limit");
   return scene;
 }
 
@@ -180,6 +202,7 @@ int execute(const RunOptions& o, const SceneDef& scene, W& world, const Make& ma
   }
 
   std::cout << stateText(world) << '\n' << std::flush;
+  if (o.hash) std::cerr << "state-hash: " << hashHex(stateHashOf(world)) << '\n';
   if constexpr (std::is_same_v<W, World>)
     warnPassLimit(world);
   else
@@ -241,6 +264,14 @@ void addRunCommand(CLI::App& app, CommandAction& action) {
   cmd->add_option("--csv-every", o->csvEvery, "CSV rows after every N-th step, integer >= 1")
       ->type_name("N")
       ->default_val(1);
+  cmd->add_option("--max-steps", o->maxSteps,
+                  "Refuse (exit 2) a run of more than N steps, integer >= 0; 0 = no limit")
+      ->type_name("N")
+      ->default_val(o->maxSteps)
+      ->check(integerInRange(0, std::numeric_limits<long long>::max()));
+  cmd->add_flag("--hash", o->hash,
+                "Also print 'state-hash: <16 hex digits>' on stderr: FNV-1a 64 of the final "
+                "state (docs/determinism.md)");
   const Box2DIterationOptions iterations =
       addBox2DIterationOptions(*cmd, o->iterations, " (with --engine box2d only)");
   cmd->callback([o, dt, duration, iterations, &action] {

@@ -2,22 +2,24 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
-#include <cmath>
+#include <charconv>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <functional>
-#include <iomanip>
 #include <iostream>
 #include <memory>
-#include <sstream>
+#include <optional>
 #include <string>
+#include <tuple>
+#include <utility>
 
 #include "cli_common.h"
 #include "commands.h"
 #include "particles/compare/case_generator.h"
 #include "particles/compare/suite.h"
+#include "particles/compare/suite_merge.h"
 #include "particles/compare/suite_report.h"
+#include "suite_output.h"
 
 namespace particles::cli {
 namespace {
@@ -42,6 +44,9 @@ Same --seed and --cases give the same report, whatever --jobs (except
 Reports (the directory is created; old reports in it are replaced):
   DIR/report.md    summary per family, mutants, failed/unexplained cases
   DIR/report.json  everything, per-case records (docs/report-format.md)
+Shards (--shard K/N): N machines each run one slice of the same suite, case
+i in shard (i mod N) + 1, the mutation check in shard 1; 'particles merge
+DIR...' combines the N reports into the report of one run (docs/cli.md).
 Output: a per-family summary on stdout (worst differences in m/s and rad/s;
 "n/a" where no case has a closed form), the PASS/FAIL line, cases/s, the
 mutant catch rate and where the report is. A progress bar on stderr only when
@@ -52,9 +57,6 @@ Exit status:
   2  bad arguments, or DIR cannot be written: one line on stderr
 )";
 
-// Above this many cases in total, report.json keeps only the notable records
-// unless --records all says otherwise (a record is ~2 kB of JSON).
-constexpr long long kAllRecordsUpTo = 100000;
 // Keeps the total case count (catalogue + 6 families) well inside an int.
 constexpr long long kMaxCasesPerFamily = 100000000;
 constexpr long long kMaxJobs = 1024;
@@ -67,7 +69,36 @@ struct SuiteOptions {
   std::string records;  // "all", "notable", or "" for the default
   bool noMutants = false;
   Box2DIterations iterations;
+  std::string shard;  // "K/N", or "" for the whole suite
 };
+
+// ---- Shards ----------------------------------------------------------------------
+
+constexpr long long kMaxShards = 1000000;
+
+// "K/N" with 1 <= K <= N <= kMaxShards, as two ints; nullopt otherwise.
+std::optional<std::pair<int, int>> parseShard(const std::string& text) {
+  const std::size_t slash = text.find('/');
+  if (slash == std::string::npos) return std::nullopt;
+  long long k = 0, n = 0;
+  const char* end = text.data() + text.size();
+  const auto [kEnd, kErr] = std::from_chars(text.data(), text.data() + slash, k);
+  const auto [nEnd, nErr] = std::from_chars(text.data() + slash + 1, end, n);
+  if (kErr != std::errc() || nErr != std::errc() || kEnd != text.data() + slash || nEnd != end ||
+      k < 1 || n < k || n > kMaxShards)
+    return std::nullopt;
+  return std::pair{static_cast<int>(k), static_cast<int>(n)};
+}
+
+CLI::Validator shardSpec() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        if (parseShard(text)) return "";
+        return "must be K/N with integers 1 <= K <= N <= " + std::to_string(kMaxShards) + ", got " +
+               text;
+      },
+      "");
+}
 
 // ---- Progress bar ---------------------------------------------------------------
 
@@ -106,85 +137,7 @@ class ProgressBar {
   std::string last_;
 };
 
-// ---- Summary on stdout ---------------------------------------------------------
-
-std::string sci(double x) {
-  if (std::isnan(x)) return "n/a";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2e", x);
-  return buf;
-}
-
-std::string padded(const std::string& s, std::size_t width, bool right) {
-  if (s.size() >= width) return s;
-  const std::string fill(width - s.size(), ' ');
-  return right ? fill + s : s + fill;
-}
-
-std::string summaryText(const compare::SuiteResult& result, const fs::path& dir,
-                        compare::CaseRecords records) {
-  std::ostringstream out;
-  out << padded("family", 18, false) << padded("cases", 8, true) << padded("failed", 8, true)
-      << padded("engine-truth worst", 22, true) << padded("Box2D-ref worst", 22, true)
-      << padded("unexplained", 13, true) << "  Box2D causes\n";
-  out << padded("", 34, false) << padded("|dv| m/s |dw| rad/s", 22, true)
-      << padded("|dv| m/s |dw| rad/s", 22, true) << "\n";
-  for (const compare::FamilySummary& s : compare::summarise(result)) {
-    std::string causes;
-    for (const auto& [name, n] : s.causes) {
-      if (name == "agrees") continue;
-      causes += (causes.empty() ? "" : ", ") + name + " " + std::to_string(n);
-    }
-    out << padded(std::string(compare::familyName(s.family)), 18, false)
-        << padded(std::to_string(s.cases), 8, true) << padded(std::to_string(s.failed), 8, true)
-        << padded(sci(s.engineWorstV), 13, true) << padded(sci(s.engineWorstW), 9, true)
-        << padded(sci(s.box2dWorstV), 13, true) << padded(sci(s.box2dWorstW), 9, true)
-        << padded(std::to_string(s.unexplained), 13, true) << "  "
-        << (causes.empty() ? "-" : causes) << "\n";
-  }
-  out << "\n"
-      << (result.passed() ? "PASS" : "FAIL") << ": " << result.cases.size() << " cases, "
-      << result.failed() << " failed, " << result.unexplained()
-      << " unexplained Box2D discrepancies\n";
-  if (result.mutants.empty()) {
-    out << "Mutant catch rate: not run (--no-mutants)\n";
-  } else {
-    int caught = 0;
-    for (const compare::MutantRecord& m : result.mutants) caught += m.caught;
-    out << "Mutant catch rate: " << std::lround(100.0 * result.mutantCatchRate()) << " % ("
-        << caught << " of " << result.mutants.size() << " mutants caught)\n";
-  }
-  out << "Speed: " << std::lround(result.isolatedCasesPerSecond) << " isolated cases/s ("
-      << result.isolatedCases << " cases), " << std::lround(result.casesPerSecond)
-      << " cases/s overall, on " << result.jobs << " threads (" << std::fixed
-      << std::setprecision(3) << result.seconds << " s; the mutation check is not counted)\n"
-      << std::defaultfloat;
-  out << "Report: " << (dir / "report.md").string() << " and " << (dir / "report.json").string()
-      << " (case records: " << (records == compare::CaseRecords::All ? "all" : "notable") << ")\n";
-  return out.str();
-}
-
 // ---- The command ---------------------------------------------------------------
-
-// Creates DIR and checks it can hold files, before the suite spends minutes.
-bool prepareReportDir(const fs::path& dir) {
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec || !fs::is_directory(dir)) {
-    printError("--report: cannot create the directory '" + dir.string() + "'");
-    return false;
-  }
-  const fs::path probe = dir / ".particles-write-check";
-  {
-    std::ofstream out(probe, std::ios::binary | std::ios::trunc);
-    if (!out) {
-      printError("--report: cannot write in '" + dir.string() + "'");
-      return false;
-    }
-  }
-  fs::remove(probe, ec);
-  return true;
-}
 
 int suite(const SuiteOptions& o) {
   compare::SuiteSettings settings;
@@ -195,12 +148,14 @@ int suite(const SuiteOptions& o) {
   settings.box2dVelocityIterations = o.iterations.velocity;
   settings.box2dPositionIterations = o.iterations.position;
 
+  if (const auto shard = parseShard(o.shard)) std::tie(settings.shard, settings.shards) = *shard;
+  const bool sharded = settings.shards > 1;
+
   const long long total = static_cast<long long>(compare::catalogue().size()) +
                           static_cast<long long>(compare::kAllFamilies.size()) * o.cases;
-  compare::CaseRecords records =
-      total <= kAllRecordsUpTo ? compare::CaseRecords::All : compare::CaseRecords::Notable;
-  if (o.records == "all") records = compare::CaseRecords::All;
-  if (o.records == "notable") records = compare::CaseRecords::Notable;
+  // A shard keeps every record by default: `particles merge` needs them.
+  const compare::CaseRecords records =
+      caseRecordsFor(total, sharded && o.records.empty() ? "all" : o.records);
 
   const fs::path dir = o.report;
   if (!prepareReportDir(dir)) return kExitBadInput;
@@ -214,12 +169,25 @@ int suite(const SuiteOptions& o) {
   bar.finish();
 
   try {
-    compare::writeSuiteReport(result, dir, records);
+    if (!sharded) {
+      compare::writeSuiteReport(result, dir, records);
+    } else {
+      // A shard's report says which shard it is, for `particles merge`.
+      nlohmann::json json = compare::suiteJson(result, records);
+      json["shard"] = compare::shardJson(settings);
+      std::string md = compare::suiteMarkdown(result);
+      md.insert(md.find("\n\n") + 2,
+                "Shard " + std::to_string(settings.shard) + " of " +
+                    std::to_string(settings.shards) + " (the cases whose index i has i mod " +
+                    std::to_string(settings.shards) + " = " + std::to_string(settings.shard - 1) +
+                    "): combine the shards with `particles merge`.\n\n");
+      writeReportFiles(dir, json, md);
+    }
   } catch (const std::exception& e) {
     printError(std::string("--report: ") + e.what());
     return kExitFailed;
   }
-  std::cout << summaryText(result, dir, records) << std::flush;
+  std::cout << suiteSummaryText(result, dir, records) << std::flush;
   if (!std::cout) return kExitFailed;
   return result.passed() ? kExitOk : kExitFailed;
 }
@@ -258,6 +226,12 @@ void addSuiteCommand(CLI::App& app, CommandAction& action) {
                   "in total, notable above")
       ->type_name("WHICH")
       ->check(CLI::IsMember({"all", "notable"}));
+  cmd->add_option("--shard", o->shard,
+                  "Run only shard K of N: the cases whose index i has i mod N = K - 1 (shard 1 "
+                  "also runs the mutation check); keeps every case record by default. "
+                  "Combine the N reports with 'particles merge'")
+      ->type_name("K/N")
+      ->check(shardSpec());
   cmd->add_flag("--no-mutants", o->noMutants,
                 "Skip the mutation check (the catch rate then counts as 100 %)");
   addBox2DIterationOptions(*cmd, o->iterations);

@@ -63,6 +63,10 @@ std::vector<ImpactCase> suiteCases(const SuiteSettings& settings) {
   return cases;
 }
 
+bool inShard(int index, const SuiteSettings& settings) {
+  return index % settings.shards == settings.shard - 1;
+}
+
 CaseRecord evaluateCase(const ImpactCase& c, const SuiteSettings& settings) {
   CaseRecord r;
   r.kase = c;
@@ -113,25 +117,29 @@ SuiteResult runSuite(const SuiteSettings& settings, const std::function<void(int
                     ? settings.jobs
                     : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   const std::vector<ImpactCase> cases = suiteCases(settings);
-  const int total = static_cast<int>(cases.size());
-  result.cases.resize(cases.size());
+  // This shard's cases by suite index: all of them unless sharded.
+  std::vector<int> mine;
+  for (int i = 0; i < static_cast<int>(cases.size()); ++i)
+    if (inShard(i, settings)) mine.push_back(i);
+  const int total = static_cast<int>(mine.size());
+  result.cases.resize(mine.size());
 
   // Isolated cases first, then the multi-contact ones; every case writes its
   // own slot, so the order of the phases changes no result.
-  std::vector<int> order;
-  for (int i = 0; i < total; ++i)
-    if (cases[i].isolated) order.push_back(i);
+  std::vector<int> order;  // slots, i.e. positions in `mine`
+  for (int j = 0; j < total; ++j)
+    if (cases[mine[j]].isolated) order.push_back(j);
   result.isolatedCases = static_cast<int>(order.size());
-  for (int i = 0; i < total; ++i)
-    if (!cases[i].isolated) order.push_back(i);
+  for (int j = 0; j < total; ++j)
+    if (!cases[mine[j]].isolated) order.push_back(j);
 
   std::atomic<int> done{0};
   const auto t0 = std::chrono::steady_clock::now();
   std::thread runner([&] {
     auto run = [&](int k) {
-      const int i = order[k];
-      result.cases[i] = evaluateCase(cases[i], settings);
-      result.cases[i].index = i;
+      const int j = order[k];
+      result.cases[j] = evaluateCase(cases[mine[j]], settings);
+      result.cases[j].index = mine[j];
     };
     parallelFor(result.isolatedCases, result.jobs, run, &done);
     result.isolatedSeconds =
@@ -152,7 +160,8 @@ SuiteResult runSuite(const SuiteSettings& settings, const std::function<void(int
   result.isolatedCasesPerSecond =
       result.isolatedSeconds > 0.0 ? result.isolatedCases / result.isolatedSeconds : 0.0;
 
-  if (settings.mutants) {
+  // Shard 1 runs the whole mutation check: it depends on the settings only.
+  if (settings.mutants && settings.shard == 1) {
     // The mutant's cases: the catalogue, then each family's first cases.
     std::vector<const ImpactCase*> pool;
     for (const ImpactCase& c : cases)

@@ -7,6 +7,9 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "particles/compare/results_hash.h"
+#include "particles/state_hash.h"
+
 namespace particles::compare {
 namespace {
 
@@ -173,6 +176,7 @@ nlohmann::json suiteJson(const SuiteResult& result, CaseRecords records) {
     if (records == CaseRecords::All || notable) cases.push_back(caseJson(r));
   }
   return {{"schema", kSchema},
+          {"results_hash", hashHex(resultsHash(result))},  // docs/determinism.md
           {"settings",
            {{"cases_per_family", st.casesPerFamily},
             {"seed", st.seed},

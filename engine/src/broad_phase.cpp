@@ -80,10 +80,12 @@ void BroadPhase::findPairs(std::span<const Vec2> position, std::span<const doubl
 
   Vec2 lo = position[0], hi = position[0];
   double maxRadius = 0.0;
+  bool finite = true;  // min/max skip NaNs: a NaN position leaves lo and hi finite
   for (int i = 0; i < n; ++i) {
     lo = lo.cwiseMin(position[i]);
     hi = hi.cwiseMax(position[i]);
     maxRadius = std::max(maxRadius, radius[i]);
+    finite = finite && position[i].allFinite();
   }
   // Cells one largest diameter wide: touching balls are in the same or a
   // neighbouring cell. A sparse scene would need a huge grid, so the cell
@@ -92,9 +94,10 @@ void BroadPhase::findPairs(std::span<const Vec2> position, std::span<const doubl
   // cells are widened by more than it so they still land in neighbouring cells.
   double cell = 2.0 * maxRadius * (1.0 + 4.0 * kTouchSlop);
   const Vec2 extent = hi - lo;
-  if (!extent.allFinite() || !(maxRadius > 0.0)) {
-    // Positions spread beyond a double's range (or not finite at all): no
-    // grid can be laid over them, and brute force gives the same pairs.
+  if (!finite || !extent.allFinite() || !(maxRadius > 0.0)) {
+    // Positions spread beyond a double's range, or not finite (a diverged
+    // run; a NaN cell index would write out of bounds): no grid can be laid
+    // over them, and brute force gives the same pairs.
     findPairsBruteForce(position, radius, out);
     return;
   }

@@ -8,41 +8,65 @@
 namespace particles::scenefile {
 namespace {
 
-using Event = nlohmann::json::parse_event_t;
+using Json = nlohmann::json;
 
-// Follows the parser through the document, so that problems found while
-// parsing (a duplicate key, a number that overflows) can name a JSON path.
-class PathTracker {
+// A first, DOM-less pass over the text that follows the parser through the
+// document, so that problems found while parsing (a duplicate key, a number
+// that overflows, a syntax error) can name a JSON path. (A parse callback
+// could do the same in one pass, but nlohmann's callback parser rescans the
+// enclosing array after every element: quadratic, minutes for 10^5 balls.)
+class PathTracker final : public nlohmann::json_sax<Json> {
  public:
   explicit PathTracker(const std::string& file) : file_(file) {}
 
-  // The parser's callback; throws SceneError on a duplicate key.
-  void operator()(Event event, const nlohmann::json& parsed) {
-    switch (event) {
-      case Event::object_start:
-      case Event::array_start:
-        stack_.push_back({event == Event::array_start, 0, {}, {}});
-        break;
-      case Event::key: {
-        Frame& top = stack_.back();
-        top.key = parsed.get<std::string>();
-        if (!top.keys.insert(top.key).second)
-          throw SceneError(file_, pathOf(stack_.size() - 1), "duplicate key '" + top.key + "'");
-        break;
-      }
-      case Event::object_end:
-      case Event::array_end:
-        stack_.pop_back();
-        finishedValue();
-        break;
-      case Event::value:
-        finishedValue();
-        break;
-    }
+  bool null() override { return finishedValue(); }
+  bool boolean(bool) override { return finishedValue(); }
+  bool number_integer(number_integer_t) override { return finishedValue(); }
+  bool number_unsigned(number_unsigned_t) override { return finishedValue(); }
+  bool number_float(number_float_t, const string_t&) override { return finishedValue(); }
+  bool string(string_t&) override { return finishedValue(); }
+  bool binary(binary_t&) override { return finishedValue(); }
+  bool start_object(std::size_t) override { return open(false); }
+  bool start_array(std::size_t) override { return open(true); }
+  bool end_object() override { return close(); }
+  bool end_array() override { return close(); }
+
+  // Throws SceneError on a duplicate key.
+  bool key(string_t& key) override {
+    Frame& top = stack_.back();
+    top.key = key;
+    if (!top.keys.insert(top.key).second)
+      throw SceneError(file_, pathOf(stack_.size() - 1), "duplicate key '" + top.key + "'");
+    return true;
   }
 
-  // Path of the value being read.
-  std::string currentPath() const { return pathOf(stack_.size()); }
+  bool parse_error(std::size_t, const std::string&, const Json::exception& e) override {
+    overflow_ = dynamic_cast<const Json::out_of_range*>(&e) != nullptr;
+    error_ = e.what();
+    errorPath_ = pathOf(stack_.size());  // the value being read
+    return false;
+  }
+
+  // The SceneError for the parser's error, if there was one.
+  void throwIfFailed() const {
+    if (error_.empty()) return;
+    std::string message = error_;
+    if (overflow_) {
+      // 406: a number like 1e999 that overflows a double. Valid JSON, but not
+      // a finite number, reported where it occurs.
+      const auto quote = message.find('\'');
+      const std::string number = quote == message.npos
+                                     ? message
+                                     : message.substr(quote + 1, message.rfind('\'') - quote - 1);
+      throw SceneError(file_, errorPath_,
+                       "must be a finite number, got " + number + " (too large for a double)");
+    }
+    // Drop nlohmann's "[json.exception.parse_error.101] " prefix.
+    if (const auto close = message.find("] ");
+        message.starts_with("[json.") && close != message.npos)
+      message.erase(0, close + 2);
+    throw SceneError(file_ + ": not valid JSON: " + message);
+  }
 
  private:
   struct Frame {
@@ -52,8 +76,19 @@ class PathTracker {
     std::set<std::string> keys;
   };
 
-  void finishedValue() {
+  bool open(bool array) {
+    stack_.push_back({array, 0, {}, {}});
+    return true;
+  }
+
+  bool close() {
+    stack_.pop_back();
+    return finishedValue();
+  }
+
+  bool finishedValue() {
     if (!stack_.empty() && stack_.back().array) ++stack_.back().index;
+    return true;
   }
 
   // Path through the outermost `depth` open objects and arrays.
@@ -75,35 +110,18 @@ class PathTracker {
 
   const std::string& file_;
   std::vector<Frame> stack_;
+  std::string error_, errorPath_;
+  bool overflow_ = false;
 };
 
 }  // namespace
 
 nlohmann::json parseJson(std::string_view text, const std::string& file) {
   PathTracker tracker(file);
-  try {
-    return nlohmann::json::parse(text, [&](int, Event event, nlohmann::json& parsed) {
-      tracker(event, parsed);
-      return true;
-    });
-  } catch (const nlohmann::json::parse_error& e) {
-    // Drop nlohmann's "[json.exception.parse_error.101] " prefix.
-    std::string message = e.what();
-    if (const auto close = message.find("] ");
-        message.starts_with("[json.") && close != message.npos)
-      message.erase(0, close + 2);
-    throw SceneError(file + ": not valid JSON: " + message);
-  } catch (const nlohmann::json::out_of_range& e) {
-    // 406: a number like 1e999 that overflows a double. Valid JSON, but not a
-    // finite number, reported where it occurs.
-    std::string message = e.what();
-    const auto quote = message.find('\'');
-    const std::string number = quote == message.npos
-                                   ? message
-                                   : message.substr(quote + 1, message.rfind('\'') - quote - 1);
-    throw SceneError(file, tracker.currentPath(),
-                     "must be a finite number, got " + number + " (too large for a double)");
-  }
+  Json::sax_parse(text, &tracker);
+  tracker.throwIfFailed();
+  // Known valid now; parsed without a callback, in linear time.
+  return Json::parse(text);
 }
 
 }  // namespace particles::scenefile

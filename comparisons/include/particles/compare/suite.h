@@ -27,6 +27,12 @@ struct SuiteSettings {
   int mutantCasesPerFamily = 200;
   bool mutants = true;
   GeneratorSettings generator;
+  // Sharding (`particles suite --shard K/N`, docs/cli.md): run only the
+  // cases whose suite index i has i % shards == shard - 1, so that N
+  // machines share the suite; shard 1 also runs the mutation check. 1 of 1
+  // is the whole suite.
+  int shard = 1;   // 1..shards
+  int shards = 1;  // >= 1
 };
 
 // Everything the suite learned about one case.
@@ -73,6 +79,9 @@ struct SuiteResult {
 
 // The case list the suite runs, in order.
 std::vector<ImpactCase> suiteCases(const SuiteSettings& settings);
+
+// Whether the case with this suite index belongs to the settings' shard.
+bool inShard(int index, const SuiteSettings& settings);
 
 // Runs one case through all sources and judges it.
 CaseRecord evaluateCase(const ImpactCase& c, const SuiteSettings& settings);
