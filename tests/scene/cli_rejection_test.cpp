@@ -312,7 +312,13 @@ TEST_F(Rejection, BoxMinNotBelowMax) {
 
 TEST_F(Rejection, SolverPassesZero) {
   expectRejected(withBall(R"("solver": {"contact_passes": 0})"), "solver.contact_passes",
-                 "must be an integer in [1, 2147483647], got 0");
+                 "must be an integer in [1, 10000], got 0");
+}
+
+// Finding 1 of docs/fuzzing.md: 2147483647 passes made a resting stack hang.
+TEST_F(Rejection, SolverPassesBeyondTheBound) {
+  expectRejected(withBall(R"("solver": {"correction_passes": 10001})"), "solver.correction_passes",
+                 "must be an integer in [1, 10000], got 10001");
 }
 
 TEST_F(Rejection, SolverPassesNotInteger) {
