@@ -1,7 +1,9 @@
 #include "particles/viewer/camera.h"
 
 #include <algorithm>
+#include <stdexcept>
 
+#include "particles/reference/box2d_world.h"
 #include "particles/world.h"
 
 namespace particles::viewer {
@@ -47,12 +49,12 @@ Bounds sceneBounds(const SceneDef& scene) {
   return {mid - half, mid + half};
 }
 
-Bounds runBounds(const SceneDef& scene, long long maxBallSteps) {
-  Bounds b = sceneBounds(scene);
-  if (scene.balls.empty()) return b;
-  const long long balls = static_cast<long long>(scene.balls.size());
-  const long long steps = std::min(scene.stepCount(), maxBallSteps / balls);
-  World world(scene);
+namespace {
+
+// Grows b by every ball's disk at each of `steps` steps of `world` (the engine
+// or its Box2D twin: both have step(), ballCount() and ball(i)).
+template <class AnyWorld>
+void growByRun(AnyWorld& world, const SceneDef& scene, long long steps, Bounds& b) {
   for (long long s = 0; s < steps; ++s) {
     world.step();
     for (std::size_t i = 0; i < world.ballCount(); ++i) {
@@ -62,6 +64,26 @@ Bounds runBounds(const SceneDef& scene, long long maxBallSteps) {
       b.lo = b.lo.cwiseMin(x - r);
       b.hi = b.hi.cwiseMax(x + r);
     }
+  }
+}
+
+}  // namespace
+
+Bounds runBounds(const SceneDef& scene, long long maxBallSteps) {
+  Bounds b = sceneBounds(scene);
+  if (scene.balls.empty()) return b;
+  const long long balls = static_cast<long long>(scene.balls.size());
+  const long long steps = std::min(scene.stepCount(), maxBallSteps / balls);
+  World world(scene);
+  growByRun(world, scene, steps, b);
+  // The Box2D twin too: where the engines disagree (a Newton's cradle, say)
+  // its balls go where the engine's never do, and overlay and side-by-side
+  // modes must show them.
+  try {
+    reference::Box2DWorld twin(scene, reference::Box2DSettings::forScene(scene));
+    growByRun(twin, scene, steps, b);
+  } catch (const std::invalid_argument&) {
+    // A scene Box2D cannot take: the viewer shows the engine alone.
   }
   return b;
 }

@@ -41,7 +41,8 @@ struct Bounds {
 Bounds sceneBounds(const SceneDef& scene);
 
 // sceneBounds grown by every ball's disk at every step of the engine's run of
-// the scene's duration, so that the first view shows all the scene will do.
+// the scene's duration, and of its Box2D twin's run, so that the first view
+// shows all that either engine will do.
 // The run stops after maxBallSteps (steps times balls) to bound the cost on
 // big scenes; non-finite states are ignored.
 inline constexpr long long kBoundsBallSteps = 2000000;
