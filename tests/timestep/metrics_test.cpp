@@ -54,6 +54,18 @@ TEST(TimestepMetrics, SlideToRollTakesTheWorseOfTimeAndSpeed) {
   EXPECT_NEAR(run(f, *m), 0.2, 1e-12);
 }
 
+// Same disk, samples at 0, 0.3 s (slip 3 - 9 * 0.3 = 0.3) and 0.4 s (rolling):
+// the slip line reaches 0 at 0.3 + 0.3 * 0.3 / 2.7 = 1/3 s = t* exactly, so
+// only the final speed 2.01 (0.5 % above vf = 2) counts.
+TEST(TimestepMetrics, SlideToRollFindsTheRollingTimeBetweenSamples) {
+  const double r = 0.5;
+  std::vector<Frame> f{{0.0, {at(0, r, 3.0)}},
+                       {0.3, {at(0.6, r, 2.1, 0, -3.6)}},        // slip 2.1 - 1.8 = 0.3
+                       {0.4, {at(0.8, r, 2.01, 0, -2.01 / r)}}};  // rolling
+  auto m = slideToRoll(0, 3.0, r, 0.5, 0.3, 10.0);
+  EXPECT_NEAR(run(f, *m), 0.005, 1e-12);
+}
+
 TEST(TimestepMetrics, SlideToRollThatNeverRollsCountsAsOne) {
   std::vector<Frame> f{{0.0, {at(0, 0.5, 3.0)}}, {0.5, {at(1, 0.5, 2.9)}}};
   auto m = slideToRoll(0, 3.0, 0.5, 0.5, 0.3, 10.0);

@@ -192,7 +192,7 @@ std::vector<double> positions(const Stepper& s) {
 TimestepScene billiards() {
   TimestepScene t;
   t.name = "billiards";
-  t.description = "break: cue ball at 6 m/s into a rack of 15 (1 mm gaps), e = 0.95, mu = 0.05; final positions";
+  t.description = "break: cue ball at 6 m/s into a rack of 15 (1 mm gaps), e = 0.95, mu = 0.05; positions at 0.5 s, in radii";
   t.kind = MetricKind::ConvergedReference;
   const double r = 0.1, gap = 1e-3;
   SceneDef& s = t.scene;
@@ -208,7 +208,7 @@ TimestepScene billiards() {
     for (int k = 0; k <= row; ++k)
       s.balls.push_back(ball({3.5 + row * dx, 1.25 + (k - row / 2.0) * dy}, r, 0.17));
   s.dt = 1e-3;
-  s.duration = 1.0;
+  s.duration = 0.5;
   t.referenceDt = 2e-6;
   t.observable = positions;
   t.referenceScale = r;  // error in ball radii
@@ -225,7 +225,7 @@ std::vector<double> centreOfMassHeight(const Stepper& s) {
 TimestepScene pile() {
   TimestepScene t;
   t.name = "pile";
-  t.description = "200 balls dropped into a 3 m wide box, e = 0.3, mu = 0.5, 2.5 s: settled centre-of-mass height";
+  t.description = "200 balls dropped into a 3 m wide box, e = 0.3, mu = 0.5, 1.5 s: settled centre-of-mass height";
   t.kind = MetricKind::ConvergedReference;
   const double r = 0.1;
   SceneDef& s = t.scene;
@@ -237,10 +237,10 @@ TimestepScene pile() {
   for (int row = 0; row < 20; ++row)
     for (int col = 0; col < 10; ++col)
       s.balls.push_back(
-          ball({0.3 + 0.27 * col + 0.02 * (rng.uniform() - 0.5), 0.3 + 0.25 * row}, r, 1.0));
+          ball({0.3 + 0.27 * col + 0.02 * (rng.uniform() - 0.5), 0.15 + 0.22 * row}, r, 1.0));
   s.dt = 1e-3;
-  s.duration = 2.5;
-  t.referenceDt = 2e-5;
+  s.duration = 1.5;
+  t.referenceDt = 1e-4;
   t.observable = centreOfMassHeight;
   t.referenceScale = r;
   t.metric = [](const std::vector<double>& ref) {
@@ -252,7 +252,7 @@ TimestepScene pile() {
 TimestepScene gas() {
   TimestepScene t;
   t.name = "gas";
-  t.description = "1000 elastic smooth balls in a 20 m box, random velocities ~1 m/s: energy drift";
+  t.description = "1000 elastic smooth balls in a 20 m box, random velocities 0.5-1.5 m/s, 0.25 s: energy drift";
   t.kind = MetricKind::Conservation;
   SceneDef& s = t.scene;
   s.name = t.name;
@@ -265,7 +265,7 @@ TimestepScene gas() {
                            {speed * std::cos(angle), speed * std::sin(angle)}));
   }
   s.dt = 1e-3;
-  s.duration = 1.0;
+  s.duration = 0.25;  // ~250 collisions; the bench sweeps it 20 times
   t.metric = [m = masses(s), j = inertias(s)](const std::vector<double>&) {
     return energyDrift(m, j);
   };

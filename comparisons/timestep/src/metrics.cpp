@@ -64,7 +64,22 @@ class SlideToRoll : public Metric {
   void observe(const Stepper& s) override {
     const BallState b = s.ball(ball_);
     const double slip = b.velocity.x() + b.angularVelocity * r_;
-    if (tRoll_ < 0.0 && std::fabs(slip) <= 1e-4 * v0_) tRoll_ = s.time();
+    if (tRoll_ < 0.0) {
+      if (std::fabs(slip) <= 1e-4 * v0_) {
+        // While sliding the slip falls linearly (constant friction force):
+        // extend the line through the last two sliding samples to zero, so
+        // the time is not rounded up to the sample after t*.
+        tRoll_ = s.time();
+        if (samples_ >= 2 && slip0_ > slip1_) {
+          const double t = t1_ + slip1_ * (t1_ - t0_) / (slip0_ - slip1_);
+          tRoll_ = std::clamp(t, t1_, s.time());
+        }
+      } else {
+        t0_ = t1_, slip0_ = slip1_;
+        t1_ = s.time(), slip1_ = std::fabs(slip);
+        ++samples_;
+      }
+    }
     vx_ = b.velocity.x();
   }
   double error() const override {
@@ -76,6 +91,8 @@ class SlideToRoll : public Metric {
   std::size_t ball_;
   double v0_, r_, tStar_, vf_;
   double tRoll_ = -1.0, vx_ = 0.0;
+  double t0_ = 0.0, slip0_ = 0.0, t1_ = 0.0, slip1_ = 0.0;  // the last two sliding samples
+  int samples_ = 0;
 };
 
 class ConstantAcceleration : public Metric {

@@ -40,9 +40,10 @@ std::unique_ptr<Metric> apexHeights(std::size_t ball, double floorY, double radi
 // A disk (inertia ratio q = J/(m r^2)) on a floor with velocity v0 > 0 along
 // +x and no spin, friction mu, gravity g: it slides until t* = v0 / (mu g (1
 // + 1/q)) and then rolls at vf = v0 / (1 + q) (2/3 v0 for a uniform disk).
-// Rolling starts at the first sample with |vx + w r| <= 1e-4 v0 (which biases
-// t* by at most 1e-4 t*). Error: max(|t_roll - t*| / t*, |vx(end) - vf| / vf);
-// never rolling counts as 1.
+// Rolling is seen at the first sample with |vx + w r| <= 1e-4 v0; t_roll is
+// where the line through the last two sliding samples' slips reaches zero
+// (the slip falls linearly while sliding), kept between those samples.
+// Error: max(|t_roll - t*| / t*, |vx(end) - vf| / vf); never rolling counts as 1.
 std::unique_ptr<Metric> slideToRoll(std::size_t ball, double v0, double radius, double q,
                                     double mu, double g);
 
