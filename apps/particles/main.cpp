@@ -13,6 +13,7 @@ constexpr const char* kFooter = R"(Commands:
   particles suite [--cases N] [--report DIR]          the comparison suite and its report
   particles merge DIR... [--report DIR]               combine the reports of suite --shard
   particles bench [--full] [--report DIR]             run time against error, engine vs Box2D
+  particles stress [--long] [--report DIR]            stability envelope, broken cases as scenes
 'particles COMMAND --help' explains each command's options and output.
 Units are SI throughout: metres, kilograms, seconds, radians.
 Exit status: 0 success; 1 the simulation diverged (non-finite state), the
@@ -48,6 +49,7 @@ int main(int argc, char** argv) {
   addSuiteCommand(app, action);
   addMergeCommand(app, action);
   addBenchCommand(app, action);
+  addStressCommand(app, action);
   addViewCommand(app, action);
 
   try {
