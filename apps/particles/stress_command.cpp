@@ -33,6 +33,7 @@ struct StressOptions {
   std::string out = "stress";
   std::string report;
   bool longGas = false;
+  bool sweptWalls = false;  // the engine with SolverSettings::sweptWalls
 };
 
 struct StressRow {
@@ -77,7 +78,8 @@ void writeCsv(const fs::path& file, const std::vector<StressRow>& rows) {
   if (!out) throw std::runtime_error("error writing " + file.string());
 }
 
-void writeReport(const fs::path& dir, const std::vector<StressRow>& rows, bool longGas) {
+void writeReport(const fs::path& dir, const std::vector<StressRow>& rows, bool longGas,
+                 bool swept) {
   html::Document doc("particles stress: the stability envelope");
   doc.paragraph(
       "Each case runs in the engine and in its Box2D 2.4.1 twin (continuous physics off, as the "
@@ -86,7 +88,8 @@ void writeReport(const fs::path& dir, const std::vector<StressRow>& rows, bool l
       "a wall or another ball, and for a case that ends at rest an overlap below 1 % of the "
       "radius. Broken cases are written as scene files (column \"scene\") that particles run and "
       "particles compare replay. Elastic gas: " +
-      std::string(longGas ? "1e6" : "1e4") + " steps.");
+      std::string(longGas ? "1e6" : "1e4") + " steps." +
+      (swept ? " The engine ran with continuous collision against walls (--swept-walls)." : ""));
   html::Table t{"Envelope", {"axis", "value", "engine", "Box2D", "overlap at rest (engine / Box2D, / r)", "scene"}, {}, {}};
   for (const StressRow& r : rows) {
     t.rows.push_back({r.c->axis, r.c->value, verdictText(r.engineVerdict),
@@ -129,7 +132,9 @@ int stress(const StressOptions& o) {
     const long long every = c.scene.balls.size() > 50 ? 100 : 1;
     StressRow r{&c, {}, {}, {}, {}, {}};
     {
-      auto s = timestep::engineStepper(c.scene);
+      SceneDef scene = c.scene;
+      scene.solver.sweptWalls = o.sweptWalls;
+      auto s = timestep::engineStepper(scene);
       r.engine = timestep::observeStress(*s, c, every);
     }
     {
@@ -151,7 +156,7 @@ int stress(const StressOptions& o) {
   writeCsv(out / "envelope.csv", rows);
   if (!o.report.empty()) {
     writeCsv(fs::path(o.report) / "envelope.csv", rows);
-    writeReport(o.report, rows, o.longGas);
+    writeReport(o.report, rows, o.longGas, o.sweptWalls);
   }
   std::printf("%-14s %-12s %-44s %s\n", "axis", "value", "engine", "Box2D");
   int broken = 0;
@@ -191,6 +196,9 @@ findings, not failures); 1 on an I/O error; 2 on bad arguments.)");
   cmd->add_option("--report", o->report, "Also write DIR/index.html (envelope table and plot)")
       ->type_name("DIR");
   cmd->add_flag("--long", o->longGas, "Run the elastic gas for 1e6 steps instead of 1e4");
+  cmd->add_flag("--swept-walls", o->sweptWalls,
+                "Run the engine with continuous collision against walls (SolverSettings::sweptWalls; "
+                "the written scenes do not carry it)");
   cmd->callback([o, &action] {
     action = [o] {
       try {
