@@ -95,6 +95,24 @@ TEST(TimestepMetrics, ExactTrajectoryTakesTheWorstComponent) {
   EXPECT_NEAR(run(f, *m), 0.05, 1e-12);
 }
 
+// A bounce at t = 0.5 s: v = +1 before, -1 after. A sample at exactly 0.5 s
+// with either velocity is right; 0.1 s later only the new one is.
+TEST(TimestepMetrics, ExactTrajectoryAcceptsEitherSideOfAnImpact) {
+  ExactState exact = [](double t) {
+    return t <= 0.5 ? BallState{{t, 0}, {1, 0}, 0, 0} : BallState{{1 - t, 0}, {-1, 0}, 0, 0};
+  };
+  std::vector<Frame> before{{0.0, {at(0, 0, 1)}}, {0.5, {at(0.5, 0, 1)}}};
+  std::vector<Frame> after{{0.0, {at(0, 0, 1)}}, {0.5, {at(0.5, 0, -1)}}};
+  std::vector<Frame> late{{0.0, {at(0, 0, 1)}}, {0.5, {at(0.5, 0, 1)}}, {0.6, {at(0.6, 0, 1)}}};
+  auto m1 = exactTrajectory(0, exact, 0.5, 1.0, 1.0, {0.5});
+  auto m2 = exactTrajectory(0, exact, 0.5, 1.0, 1.0, {0.5});
+  auto m3 = exactTrajectory(0, exact, 0.5, 1.0, 1.0, {0.5});
+  EXPECT_EQ(run(before, *m1), 0.0);
+  // (the "just after" exact position is 1 - nextafter(0.5), one rounding off)
+  EXPECT_NEAR(run(after, *m2), 0.0, 1e-15);
+  EXPECT_NEAR(run(late, *m3), 2.0, 1e-12);  // |dv| = 2 at 0.6 s (|dx| = 0.2)
+}
+
 TEST(TimestepMetrics, ExactFinalStateReadsOnlyTheLastSample) {
   std::vector<BallState> exact{at(1, 0), at(2, 0, 1)};
   std::vector<Frame> f{{0.0, {at(5, 5), at(5, 5)}}, {1.0, {at(1, 0), at(2.1, 0, 1)}}};

@@ -131,7 +131,9 @@ TimestepScene obliqueSpin() {
     return BallState{xc + (time - tc) * v, v, 0.0, after.w};
   };
   const double speed = v0.norm() + std::fabs(w0) * r;
-  t.metric = [=](const std::vector<double>&) { return exactTrajectory(0, exact, r, r, speed); };
+  t.metric = [=](const std::vector<double>&) {
+    return exactTrajectory(0, exact, r, r, speed, {tc});
+  };
   return t;
 }
 

@@ -125,10 +125,23 @@ double stateError(const BallState& b, const BallState& x, double radius, double 
 
 class ExactTrajectory : public Metric {
  public:
-  ExactTrajectory(std::size_t ball, ExactState exact, double radius, double length, double speed)
-      : ball_(ball), exact_(std::move(exact)), r_(radius), length_(length), speed_(speed) {}
+  ExactTrajectory(std::size_t ball, ExactState exact, double radius, double length, double speed,
+                  std::vector<double> jumps)
+      : ball_(ball),
+        exact_(std::move(exact)),
+        r_(radius),
+        length_(length),
+        speed_(speed),
+        jumps_(std::move(jumps)) {}
   void observe(const Stepper& s) override {
-    worst_ = std::max(worst_, stateError(s.ball(ball_), exact_(s.time()), r_, length_, speed_));
+    const BallState b = s.ball(ball_);
+    const double t = s.time();
+    double e = stateError(b, exact_(t), r_, length_, speed_);
+    for (double tj : jumps_)
+      if (std::fabs(t - tj) <= 1e-9)
+        e = std::min({e, stateError(b, exact_(tj), r_, length_, speed_),
+                      stateError(b, exact_(std::nextafter(tj, INFINITY)), r_, length_, speed_)});
+    worst_ = std::max(worst_, e);
   }
   double error() const override { return worst_; }
 
@@ -136,6 +149,7 @@ class ExactTrajectory : public Metric {
   std::size_t ball_;
   ExactState exact_;
   double r_, length_, speed_, worst_ = 0.0;
+  std::vector<double> jumps_;
 };
 
 class ExactFinalState : public Metric {
@@ -239,9 +253,10 @@ std::unique_ptr<Metric> constantAcceleration(std::size_t ball, Vec2 downhill, do
   return std::make_unique<ConstantAcceleration>(ball, downhill.normalized(), a);
 }
 std::unique_ptr<Metric> exactTrajectory(std::size_t ball, ExactState exact, double radius,
-                                        double lengthScale, double speedScale) {
+                                        double lengthScale, double speedScale,
+                                        std::vector<double> jumps) {
   return std::make_unique<ExactTrajectory>(ball, std::move(exact), radius, lengthScale,
-                                           speedScale);
+                                           speedScale, std::move(jumps));
 }
 std::unique_ptr<Metric> exactFinalState(std::vector<BallState> exact, std::vector<double> radii,
                                         double lengthScale, double speedScale) {

@@ -54,10 +54,13 @@ std::unique_ptr<Metric> constantAcceleration(std::size_t ball, Vec2 downhill, do
 
 // A ball's whole state against an exact trajectory `exact(t)`.
 // Error: max over samples of max(|dx| / lengthScale, |dv| / speedScale,
-// |dw| r / speedScale).
+// |dw| r / speedScale). At an impact time in `jumps` (s) the exact velocity
+// has two values, before and after; a sample within 1e-9 s of one is
+// compared with the nearer of the two (exact(t_j) and exact(just after t_j)).
 using ExactState = std::function<BallState(double t)>;
 std::unique_ptr<Metric> exactTrajectory(std::size_t ball, ExactState exact, double radius,
-                                        double lengthScale, double speedScale);
+                                        double lengthScale, double speedScale,
+                                        std::vector<double> jumps = {});
 
 // The final state against exact final states (only the last sample counts).
 // Error: max over balls of max(|dx| / lengthScale, |dv| / speedScale, |dw| r_i / speedScale).
