@@ -87,6 +87,11 @@ void writeBenchReport(const std::string& dir, const BenchResults& results) {
   for (const BenchSceneSummary& s : results.scenes) {
     doc.heading(s.scene);
     doc.paragraph(s.description + ". " + ratioText(s.ratio) + ".");
+    if (s.referenceConvergence >= 0)
+      doc.note("The reference (the engine at a far smaller step) is itself uncertain by " +
+               sci(s.referenceConvergence) +
+               ": errors below that cannot be told apart and count as that for the fronts, "
+               "so the plot shows runs left of it that are not on a front.");
     doc.plot(scenePlot(s.scene, results.runs));
     html::Table front{"Pareto fronts (cheapest first)", {"engine", "configuration", "wall s / s", "error"}, {}, {}};
     std::vector<BenchRun> rows;
