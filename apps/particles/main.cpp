@@ -12,6 +12,8 @@ constexpr const char* kFooter = R"(Commands:
   particles compare SCENE.json...                     engine vs Box2D, event by event
   particles suite [--cases N] [--report DIR]          the comparison suite and its report
   particles merge DIR... [--report DIR]               combine the reports of suite --shard
+  particles bench [--full] [--report DIR]             run time against error, engine vs Box2D
+  particles stress [--long] [--report DIR]            stability envelope, broken cases as scenes
 'particles COMMAND --help' explains each command's options and output.
 Units are SI throughout: metres, kilograms, seconds, radians.
 Exit status: 0 success; 1 the simulation diverged (non-finite state), the
@@ -46,6 +48,8 @@ int main(int argc, char** argv) {
   addCompareCommand(app, action);
   addSuiteCommand(app, action);
   addMergeCommand(app, action);
+  addBenchCommand(app, action);
+  addStressCommand(app, action);
   addViewCommand(app, action);
 
   try {

@@ -19,6 +19,7 @@
 #include "particles/compare/suite.h"
 #include "particles/compare/suite_merge.h"
 #include "particles/compare/suite_report.h"
+#include "suite_html.h"
 #include "suite_output.h"
 
 namespace particles::cli {
@@ -44,6 +45,7 @@ Same --seed and --cases give the same report, whatever --jobs (except
 Reports (the directory is created; old reports in it are replaced):
   DIR/report.md    summary per family, mutants, failed/unexplained cases
   DIR/report.json  everything, per-case records (docs/report-format.md)
+  DIR/index.html   per-family tables and discrepancy distributions (gnuplot SVG)
 Shards (--shard K/N): N machines each run one slice of the same suite, case
 i in shard (i mod N) + 1, the mutation check in shard 1; 'particles merge
 DIR...' combines the N reports into the report of one run (docs/cli.md).
@@ -183,6 +185,7 @@ int suite(const SuiteOptions& o) {
                     "): combine the shards with `particles merge`.\n\n");
       writeReportFiles(dir, json, md);
     }
+    writeSuiteHtml(dir, result);
   } catch (const std::exception& e) {
     printError(std::string("--report: ") + e.what());
     return kExitFailed;

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "contact_impulse_impl.h"
+#include "particles/swept_wall.h"
 
 namespace particles {
 namespace {
@@ -138,6 +140,7 @@ void World::resolveContacts() {
   findBallContacts(pairs_);
   wallHits_.clear();
   if (plan_.walls) findWallHits(position_, radius_, scene_.walls, wallHits_);
+  if (plan_.walls && scene_.solver.sweptWalls) addSweptWallHits();
   stats_.contacts = static_cast<int>(pairs_.size() + wallHits_.size());
   stats_.passes = 0;
   impacts_.clear();
@@ -225,9 +228,52 @@ void World::resolveContactsAs() {
     std::erase_if(impacts_, [](const ImpactEvent& e) { return e.normalImpulse == 0.0; });
 }
 
+// SolverSettings::sweptWalls: each ball apart from a wall whose path this
+// step reaches it gets that wall as a contact now (the earliest such wall
+// only), so the impulse acts this step; integratePositions() then moves it
+// with its incoming velocity up to the time of impact. Hits stay sorted by
+// ball, then wall, as the contact order requires.
+void World::addSweptWallHits() {
+  const std::size_t n = position_.size();
+  sweptTime_.assign(n, -1.0);
+  sweptVelocity_.resize(n);
+  std::vector<WallHit> merged;
+  std::size_t next = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    bool touching = false;
+    for (; next < wallHits_.size() && wallHits_[next].ball == static_cast<int>(i); ++next) {
+      merged.push_back(wallHits_[next]);
+      touching = true;
+    }
+    if (touching) continue;
+    std::optional<SweptHit> first;
+    int wall = 0;
+    for (std::size_t k = 0; k < scene_.walls.size(); ++k) {
+      const auto h = sweepAgainstWall(position_[i], velocity_[i], radius_[i], scene_.walls[k], dt_);
+      if (h && (!first || h->time < first->time)) {
+        first = h;
+        wall = static_cast<int>(k);
+      }
+    }
+    if (!first) continue;
+    merged.push_back({static_cast<int>(i), wall, first->normal, 0.0});
+    sweptTime_[i] = first->time;
+    sweptVelocity_[i] = velocity_[i];
+  }
+  wallHits_.swap(merged);
+}
+
 void World::integratePositions() {
   const std::size_t n = position_.size();
-  for (std::size_t i = 0; i < n; ++i) position_[i] += dt_ * velocity_[i];
+  if (plan_.walls && scene_.solver.sweptWalls) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const double t = sweptTime_[i];
+      position_[i] += t < 0.0 ? dt_ * velocity_[i]
+                              : Vec2(t * sweptVelocity_[i] + (dt_ - t) * velocity_[i]);
+    }
+  } else {
+    for (std::size_t i = 0; i < n; ++i) position_[i] += dt_ * velocity_[i];
+  }
   if (plan_.spin)
     for (std::size_t i = 0; i < n; ++i) angle_[i] += dt_ * angularVelocity_[i];
 }

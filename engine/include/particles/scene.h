@@ -83,6 +83,15 @@ struct SolverSettings {
   // Ball count from which the uniform grid replaces brute-force pair finding.
   // Measured with bench/broad_phase_bench (docs/performance.md). 0 = always grid.
   int gridThreshold = 48;
+  // Continuous collision against walls (docs/stress.md, "The fix"): a ball
+  // not touching a wall at the start of a step, whose straight path this step
+  // would reach it, gets the wall contact this step, and its position moves
+  // with the old velocity up to the time of impact and with the new one
+  // after. Off by default: it changes results (every wall bounce then happens
+  // at its time of impact instead of up to a step late), so the golden state
+  // hashes and the comparison with Box2D keep the discrete step; scene files
+  // cannot set it. Ball-ball contacts are not swept.
+  bool sweptWalls = false;
   // A deliberately wrong solver, for the comparison suite's mutation check
   // only. Scene files cannot set it.
   Mutation mutation = Mutation::None;

@@ -90,6 +90,7 @@ class World {
   void correctOverlaps();
 
   void findBallContacts(std::vector<BallPair>& out);
+  void addSweptWallHits();
 
   SceneDef scene_;
   StagePlan plan_;
@@ -104,6 +105,10 @@ class World {
   std::vector<ContactMaterial> material_;  // per ball, overrides applied
   std::vector<ContactMaterial> wallMaterial_;
   std::vector<Vec2> forcedVelocity_;  // what this step's forces added to each velocity
+  // SolverSettings::sweptWalls: per ball, the time of impact this step (s, <
+  // 0 for none) and the velocity it moved with until then.
+  std::vector<double> sweptTime_;
+  std::vector<Vec2> sweptVelocity_;
 
   // Scratch reused across steps so a step allocates nothing once warm.
   std::vector<BallPair> pairs_;

@@ -1,0 +1,47 @@
+#include "particles/swept_wall.h"
+
+#include <cmath>
+
+namespace particles {
+namespace {
+
+// Earliest t in [0, dt] with |x + v t - e| = r, for x outside that circle.
+std::optional<double> sweepPoint(const Vec2& x, const Vec2& v, double r, const Vec2& e,
+                                 double dt) {
+  const Vec2 d = x - e;
+  const double a = v.squaredNorm(), b = d.dot(v), c = d.squaredNorm() - r * r;
+  if (c <= 0.0 || b >= 0.0 || a == 0.0) return std::nullopt;  // inside, or moving away
+  const double disc = b * b - a * c;
+  if (disc < 0.0) return std::nullopt;
+  const double t = c / (-b + std::sqrt(disc));  // the smaller root, without cancellation
+  if (t > dt) return std::nullopt;
+  return t;
+}
+
+}  // namespace
+
+std::optional<SweptHit> sweepAgainstWall(const Vec2& x, const Vec2& v, double r,
+                                         const WallDef& wall, double dt) {
+  const Vec2 ab = wall.b - wall.a;
+  const double len2 = ab.squaredNorm();
+  std::optional<SweptHit> best;
+  if (len2 > 0.0) {
+    // The flat sides: the signed distance s0 along the unit normal must fall
+    // to r while the centre's foot stays within the segment.
+    const Vec2 unit = perpLeft(ab) / std::sqrt(len2);
+    const double s0 = (x - wall.a).dot(unit), sv = v.dot(unit);
+    if (std::fabs(s0) > r && s0 * sv < 0.0) {
+      const double t = (std::fabs(s0) - r) / std::fabs(sv);
+      const double u = (x + t * v - wall.a).dot(ab) / len2;
+      if (t <= dt && u >= 0.0 && u <= 1.0) best = SweptHit{t, s0 > 0.0 ? Vec2(-unit) : unit};
+    }
+  }
+  // The round ends (the only shape of a point wall).
+  for (const Vec2& e : {wall.a, wall.b}) {
+    const auto t = sweepPoint(x, v, r, e, dt);
+    if (t && (!best || *t < best->time)) best = SweptHit{*t, (e - (x + *t * v)).normalized()};
+  }
+  return best;
+}
+
+}  // namespace particles

@@ -1,0 +1,65 @@
+#include "particles/scene_writer.h"
+
+#include <cmath>
+
+namespace particles {
+namespace {
+
+nlohmann::json vec(const Vec2& v) { return nlohmann::json::array({v.x(), v.y()}); }
+
+nlohmann::json friction(double mu) {
+  if (std::isinf(mu)) return "infinite";
+  return mu;
+}
+
+}  // namespace
+
+nlohmann::json sceneJson(const SceneDef& s) {
+  nlohmann::json j;
+  j["name"] = s.name;
+  j["gravity"] = vec(s.gravity);
+  j["contact"] = {{"restitution", s.contact.restitution},
+                  {"friction", friction(s.contact.friction)}};
+  j["walls"] = nlohmann::json::array();
+  for (const WallDef& w : s.walls) {
+    nlohmann::json o{{"a", vec(w.a)}, {"b", vec(w.b)}};
+    if (w.restitution) o["restitution"] = *w.restitution;
+    if (w.friction) o["friction"] = friction(*w.friction);
+    j["walls"].push_back(o);
+  }
+  j["balls"] = nlohmann::json::array();
+  for (const BallDef& b : s.balls) {
+    nlohmann::json o{{"position", vec(b.position)},   {"velocity", vec(b.velocity)},
+                     {"angle", b.angle},              {"angular_velocity", b.angularVelocity},
+                     {"radius", b.radius},            {"mass", b.mass},
+                     {"inertia", b.resolvedInertia()}};
+    if (b.restitution) o["restitution"] = *b.restitution;
+    if (b.friction) o["friction"] = friction(*b.friction);
+    j["balls"].push_back(o);
+  }
+  j["forces"] = nlohmann::json::array();
+  for (const ForceDef& f : s.forces) {
+    nlohmann::json o{{"ball", f.ball}, {"start", f.start}};
+    if (f.type == ForceType::Pull) {
+      o["type"] = "pull";
+      o["target"] = vec(f.target);
+      o["stiffness"] = f.stiffness;
+    } else {
+      o["type"] = "constant";
+      o["force"] = vec(f.force);
+      o["torque"] = f.torque;
+    }
+    if (std::isfinite(f.end)) o["end"] = f.end;
+    j["forces"].push_back(o);
+  }
+  j["dt"] = s.dt;
+  j["duration"] = s.duration;
+  j["solver"] = {{"contact_passes", s.solver.contactPasses},
+                 {"correction_passes", s.solver.correctionPasses},
+                 {"grid_threshold", s.solver.gridThreshold}};
+  return j;
+}
+
+std::string sceneText(const SceneDef& scene) { return sceneJson(scene).dump(1) + "\n"; }
+
+}  // namespace particles
