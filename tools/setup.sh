@@ -19,6 +19,7 @@ packages=(
   libeigen3-dev nlohmann-json3-dev libcli11-dev libbox2d-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libsfml-dev xvfb xauth fonts-dejavu-core  # particles view, and its screenshot tests headless
+  gnuplot-nox  # the plots of the HTML reports (suite, bench, stress); without it they say so
 )
 
 missing=()
