@@ -13,6 +13,7 @@
 #include "particles/compare/case_generator.h"
 #include "particles/compare/suite_merge.h"
 #include "particles/compare/suite_report.h"
+#include "suite_html.h"
 #include "suite_output.h"
 
 namespace particles::cli {
@@ -31,7 +32,8 @@ exactly once each.
 Output: DIR/report.json and DIR/report.md, byte for byte those of one
 'particles suite' run of the same cases, except "timing" (the shards' seconds
 summed, rates recomputed, jobs the largest, plus "shards": N) and the speed
-line of report.md; the summary on stdout as 'particles suite' prints it.
+line of report.md; DIR/index.html identical to the single run's; the summary
+on stdout as 'particles suite' prints it.
 Exit status:
   0  merged, and the merged suite passed
   1  merged, and the merged suite failed; or an I/O or internal error
@@ -95,6 +97,7 @@ int merge(const MergeOptions& o) {
     nlohmann::json json = compare::suiteJson(result, records);
     json["timing"]["shards"] = merger.shards();
     writeReportFiles(out, json, compare::suiteMarkdown(result));
+    writeSuiteHtml(out, result);
   } catch (const std::exception& e) {
     printError(std::string("--report: ") + e.what());
     return kExitFailed;
@@ -116,7 +119,7 @@ void addMergeCommand(CLI::App& app, CommandAction& action) {
       ->required()
       ->type_name("DIR...");
   cmd->add_option("--report", o->report,
-                  "Directory for the merged report.json and report.md, created if missing")
+                  "Directory for the merged report.json, report.md and index.html, created if missing")
       ->type_name("DIR")
       ->default_val(o->report);
   cmd->add_option("--records", o->records,

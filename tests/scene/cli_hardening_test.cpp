@@ -111,6 +111,10 @@ TEST(CliShards, ThreeShardsMergeIntoTheSingleRunReport) {
   const std::string mdB = readFile(dir.file("merged") / "report.md");
   EXPECT_TRUE(withoutSpeed(mdA) != mdA) << "no speed line found";
   EXPECT_TRUE(withoutSpeed(mdA) == withoutSpeed(mdB)) << "report.md differs beyond the speed line";
+  // index.html holds no timing at all: identical.
+  const std::string htmlA = readFile(dir.file("single") / "index.html");
+  EXPECT_NE(htmlA.find("<table>"), std::string::npos);
+  EXPECT_TRUE(htmlA == readFile(dir.file("merged") / "index.html")) << "index.html differs";
 }
 
 class CliMergeRefuses : public ::testing::Test {
