@@ -24,6 +24,7 @@ void addRunCommand(CLI::App& app, CommandAction& action);      // run_command.cp
 void addCompareCommand(CLI::App& app, CommandAction& action);  // compare_command.cpp
 void addSuiteCommand(CLI::App& app, CommandAction& action);    // suite_command.cpp
 void addMergeCommand(CLI::App& app, CommandAction& action);    // merge_command.cpp
+void addBenchCommand(CLI::App& app, CommandAction& action);    // bench_command.cpp
 // viewer/cli/view_command.cpp, or view_unavailable.cpp in a build without SFML
 void addViewCommand(CLI::App& app, CommandAction& action);
 

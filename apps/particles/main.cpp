@@ -12,6 +12,7 @@ constexpr const char* kFooter = R"(Commands:
   particles compare SCENE.json...                     engine vs Box2D, event by event
   particles suite [--cases N] [--report DIR]          the comparison suite and its report
   particles merge DIR... [--report DIR]               combine the reports of suite --shard
+  particles bench --scale [--n N...] [--threads T...] the pile benchmark, engine vs Box2D
 'particles COMMAND --help' explains each command's options and output.
 Units are SI throughout: metres, kilograms, seconds, radians.
 Exit status: 0 success; 1 the simulation diverged (non-finite state), the
@@ -46,6 +47,7 @@ int main(int argc, char** argv) {
   addCompareCommand(app, action);
   addSuiteCommand(app, action);
   addMergeCommand(app, action);
+  addBenchCommand(app, action);
   addViewCommand(app, action);
 
   try {

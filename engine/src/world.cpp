@@ -87,6 +87,22 @@ BallState World::ball(std::size_t i) const {
   return {position_[i], velocity_[i], angle_[i], angularVelocity_[i]};
 }
 
+namespace {
+template <typename T>
+std::size_t heapBytes(const std::vector<T>& v) {
+  return v.capacity() * sizeof(T);
+}
+}  // namespace
+
+std::size_t World::memoryBytes() const {
+  return sizeof(World) + heapBytes(scene_.balls) + heapBytes(scene_.walls) +
+         heapBytes(scene_.forces) + scene_.name.capacity() + heapBytes(position_) +
+         heapBytes(velocity_) + heapBytes(angle_) + heapBytes(angularVelocity_) +
+         heapBytes(radius_) + heapBytes(invMass_) + heapBytes(invInertia_) + heapBytes(material_) +
+         heapBytes(wallMaterial_) + heapBytes(forcedVelocity_) + heapBytes(pairs_) +
+         heapBytes(wallHits_) + broadPhase_.memoryBytes() + heapBytes(impacts_);
+}
+
 void World::setPullTarget(std::size_t force, const Vec2& target) {
   scene_.forces.at(force).target = target;
 }

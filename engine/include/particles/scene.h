@@ -83,6 +83,10 @@ struct SolverSettings {
   // Ball count from which the uniform grid replaces brute-force pair finding.
   // Measured with bench/broad_phase_bench (docs/performance.md). 0 = always grid.
   int gridThreshold = 48;
+  // Worker threads of the step (>= 1; docs/scale.md). The result is
+  // bit-identical for every count: threads only share work whose order does
+  // not matter. Scene files cannot set it.
+  int threads = 1;
   // A deliberately wrong solver, for the comparison suite's mutation check
   // only. Scene files cannot set it.
   Mutation mutation = Mutation::None;

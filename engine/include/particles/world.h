@@ -72,6 +72,10 @@ class World {
   const StepStats& stats() const { return stats_; }
   const StagePlan& plan() const { return plan_; }
   const SceneDef& scene() const { return scene_; }
+  // Bytes this world holds: the object itself and the capacity of every
+  // container it owns (state, scene copy, scratch, grid). Measured from the
+  // containers, not the process, so it is exact and repeatable.
+  std::size_t memoryBytes() const;
 
   // Replaces the target of a pull force (the viewer's mouse drag).
   void setPullTarget(std::size_t force, const Vec2& target);
