@@ -81,6 +81,11 @@ void World::reset(const SceneDef& scene) {
   plan_.tangential = gripBalls >= 2 || (gripBalls >= 1 && gripWalls);
   plan_.spin = spinning || plan_.tangential || plan_.torques;
   plan_.grid = static_cast<int>(scene.balls.size()) >= scene.solver.gridThreshold;
+  // The mutants are the small-scene solver with one sign changed; they never
+  // take the large-scene path.
+  plan_.scale = static_cast<int>(scene.balls.size()) >= scene.solver.scaleThreshold &&
+                scene.solver.mutation == Mutation::None;
+  scaleSolver_.reset();
 }
 
 BallState World::ball(std::size_t i) const {
@@ -116,9 +121,13 @@ void World::run(long long steps) {
 // the post-impact velocities, then overlap removal.
 void World::step() {
   applyForces();
-  resolveContacts();
-  integratePositions();
-  correctOverlaps();
+  if (plan_.scale) {
+    scaleStep();  // the next three stages for a large scene (docs/scale.md)
+  } else {
+    resolveContacts();
+    integratePositions();
+    correctOverlaps();
+  }
   ++stepIndex_;
   ++stats_.steps;
 }
@@ -141,6 +150,24 @@ void World::applyForces() {
     }
   }
   for (std::size_t i = 0; i < velocity_.size(); ++i) velocity_[i] += forcedVelocity_[i];
+}
+
+void World::scaleStep() {
+  ScaleBodies b;
+  b.position = position_;
+  b.velocity = velocity_;
+  b.angle = angle_;
+  b.angularVelocity = angularVelocity_;
+  b.radius = radius_;
+  b.invMass = invMass_;
+  b.invInertia = invInertia_;
+  b.material = material_;
+  if (plan_.gravity || plan_.forces) b.forcedVelocity = forcedVelocity_;
+  b.walls = scene_.walls;
+  b.wallMaterial = wallMaterial_;
+  b.dt = dt_;
+  b.spin = plan_.spin;
+  scaleSolver_.step(b, scene_.solver, stats_, recordImpacts_ ? &impacts_ : nullptr);
 }
 
 void World::findBallContacts(std::vector<BallPair>& out) {

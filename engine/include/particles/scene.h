@@ -87,6 +87,18 @@ struct SolverSettings {
   // bit-identical for every count: threads only share work whose order does
   // not matter. Scene files cannot set it.
   int threads = 1;
+  // Ball count from which the large-scene path replaces the three contact
+  // stages (docs/scale.md): contacts found once per step with a margin,
+  // accumulated impulses warm-started across steps, a fixed number of
+  // iterations in graph-colour order, shared by `threads`. Below it (every
+  // example scene, every isolated impact) the step is exactly the one of
+  // docs/physics.md. Measured on the pile (docs/scale.md).
+  int scaleThreshold = 1000;
+  // Velocity iterations per step of the large-scene path (count).
+  int scaleVelocityIterations = 8;
+  // Upper bound on overlap-removal passes of the large-scene path (count);
+  // passes stop as soon as one moves nothing.
+  int scalePositionPasses = 4;
   // A deliberately wrong solver, for the comparison suite's mutation check
   // only. Scene files cannot set it.
   Mutation mutation = Mutation::None;
