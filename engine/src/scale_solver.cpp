@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <cmath>
 
 #include "particles/broad_phase.h"
@@ -21,11 +20,9 @@ constexpr double kOverlapTolerance = 1e-9;
 // is caught by the velocity solve and then by the overlap removal, with one
 // pair search per step.
 constexpr double kMarginFraction = 0.2;
-// Colours 0..63 are one bit each in a ball's mask; a row that finds all 64
-// taken (impossible for disks, which touch few neighbours) goes to colour 64,
-// solved by one thread.
-constexpr int kColours = 64;
-constexpr int kSerialColour = kColours;
+// Upper bound on the strips of the parallel solve (even: a fixed number, so
+// that no result depends on the thread count).
+constexpr int kMaxStrips = 32;
 
 // Items [begin, end) of part t of T: a split by index only, never by timing.
 std::pair<std::size_t, std::size_t> part(std::size_t n, int t, int threads) {
@@ -85,7 +82,7 @@ inline double projectRow(const ScaleBodies& s, const ScaleSolver::Row& r) {
     WallHit hit;
     if (!touchWall(s.position[a], s.radius[a], s.walls[static_cast<std::size_t>(-1 - r.b)], hit))
       return 0.0;
-    if (hit.overlap <= kOverlapTolerance * s.radius[a]) return hit.overlap;
+    if (hit.overlap <= kOverlapTolerance * r.reach) return hit.overlap;
     s.position[a] -= hit.overlap * hit.normal;
     return hit.overlap;
   }
@@ -111,8 +108,8 @@ void ScaleSolver::reset() {
 
 std::size_t ScaleSolver::memoryBytes() const {
   std::size_t bytes =
-      sizeof(Row) * rows_.capacity() + sizeof(int) * colourStart_.capacity() +
-      sizeof(std::uint64_t) * (used_.capacity() + lastKey_.capacity()) +
+      sizeof(Row) * rows_.capacity() + sizeof(int) * stripStart_.capacity() +
+      sizeof(std::uint64_t) * lastKey_.capacity() + sizeof(int) * stripOf_.capacity() +
       sizeof(int) * slot_.capacity() + sizeof(double) * (lastN_.capacity() + lastT_.capacity()) +
       sizeof(int) * (cellStart_.capacity() + cellBalls_.capacity() + ballCell_.capacity()) +
       sizeof(std::vector<Row>) * found_.capacity();
@@ -168,7 +165,6 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
     cellBalls_[static_cast<std::size_t>(next[static_cast<std::size_t>(ballCell_[i])]++)] =
         static_cast<int>(i);
   gridCols_ = cols;
-  gridRows_ = rows;
 
   const int threads = pool.size();
   found_.resize(static_cast<std::size_t>(threads));
@@ -262,32 +258,38 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
   });
 }
 
-// Greedy colouring in key order: a row takes the lowest colour that neither
-// of its balls has yet, so rows of one colour share no ball and can be
-// solved in any order, by any thread, with the same result.
-void ScaleSolver::colour(std::size_t balls) {
-  used_.assign(balls, 0);
+// Rows are split into vertical strips at least one grid cell wide, so a row
+// joins balls of the same or of neighbouring strips; a row belongs to the
+// strip of its left ball. Rows of two even strips (or of two odd strips) then
+// share no ball: all even strips can be solved at once, each in key order
+// (Gauss-Seidel), then all odd strips. The strips depend on the positions
+// only, never on the thread count, so the result is the same for any count.
+void ScaleSolver::partition(const ScaleBodies& s) {
+  const std::size_t n = s.position.size();
+  const int strips = std::clamp(static_cast<int>(gridCols_), 1, kMaxStrips);
+  stripOf_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    // Whole grid columns per strip: neighbours are at most one column apart.
+    stripOf_[i] = (ballCell_[i] % gridCols_) * strips / gridCols_;
+  }
   std::size_t total = 0;
   for (const std::vector<Row>& f : found_) total += f.size();
   slot_.resize(total);
-  std::array<int, kColours + 2> count{};
+  std::vector<int> count(static_cast<std::size_t>(strips) + 1, 0);
   std::size_t k = 0;
-  for (const std::vector<Row>& f : found_) {
+  auto stripOfRow = [&](const Row& r) {
+    const int sa = stripOf_[static_cast<std::size_t>(r.a)];
+    return r.b >= 0 ? std::min(sa, stripOf_[static_cast<std::size_t>(r.b)]) : sa;
+  };
+  for (const std::vector<Row>& f : found_)
     for (const Row& r : f) {
-      const std::uint64_t taken = used_[static_cast<std::size_t>(r.a)] |
-                                  (r.b >= 0 ? used_[static_cast<std::size_t>(r.b)] : 0);
-      const int c = taken == ~std::uint64_t{0} ? kSerialColour : std::countr_zero(~taken);
-      if (c < kColours) {
-        used_[static_cast<std::size_t>(r.a)] |= std::uint64_t{1} << c;
-        if (r.b >= 0) used_[static_cast<std::size_t>(r.b)] |= std::uint64_t{1} << c;
-      }
-      slot_[k++] = c;
-      ++count[static_cast<std::size_t>(c) + 1];
+      const int st = stripOfRow(r);
+      slot_[k++] = st;
+      ++count[static_cast<std::size_t>(st) + 1];
     }
-  }
-  colourStart_.assign(count.begin(), count.end());
-  for (std::size_t c = 1; c < colourStart_.size(); ++c) colourStart_[c] += colourStart_[c - 1];
-  std::vector<int> next(colourStart_.begin(), colourStart_.end() - 1);
+  stripStart_.assign(count.begin(), count.end());
+  for (std::size_t c = 1; c < stripStart_.size(); ++c) stripStart_[c] += stripStart_[c - 1];
+  std::vector<int> next(stripStart_.begin(), stripStart_.end() - 1);
   rows_.resize(total);
   k = 0;
   for (const std::vector<Row>& f : found_) {
@@ -306,28 +308,27 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
   const std::size_t n = s.position.size();
   if (n == 0) return;
   findRows(s, pool);
-  colour(n);
+  partition(s);
 
   const int iterations = std::max(1, settings.scaleVelocityIterations);
   const int passes = std::max(1, settings.scalePositionPasses);
   std::vector<double> maxOverlap(static_cast<std::size_t>(threads), 0.0);
   std::vector<std::array<char, 2>> moved(static_cast<std::size_t>(threads), {0, 0});
   int passesUsed = 0;
-  const int colours = static_cast<int>(colourStart_.size()) - 1;
 
-  // Runs f on every row, colour by colour, the threads sharing each colour.
-  auto byColour = [&](int t, auto&& f) {
-    for (int c = 0; c < colours; ++c) {
-      const std::size_t begin = static_cast<std::size_t>(colourStart_[static_cast<std::size_t>(c)]);
-      const std::size_t end =
-          static_cast<std::size_t>(colourStart_[static_cast<std::size_t>(c) + 1]);
-      if (begin == end) continue;  // every thread skips the same colours
-      if (c == kSerialColour) {
-        if (t == 0)
-          for (std::size_t k = begin; k < end; ++k) f(rows_[k]);
-      } else {
-        const auto [b, e] = part(end - begin, t, threads);
-        for (std::size_t k = begin + b; k < begin + e; ++k) f(rows_[k]);
+  // Runs f on every row: the even strips shared among the threads, then
+  // the odd ones (strips of one parity share no ball).
+  const int strips = static_cast<int>(stripStart_.size()) - 1;
+  auto byStrip = [&](int t, auto&& f) {
+    for (int parity = 0; parity < 2; ++parity) {
+      int index = 0;
+      for (int st = parity; st < strips; st += 2, ++index) {
+        if (index % threads != t) continue;
+        const std::size_t begin =
+            static_cast<std::size_t>(stripStart_[static_cast<std::size_t>(st)]);
+        const std::size_t end =
+            static_cast<std::size_t>(stripStart_[static_cast<std::size_t>(st) + 1]);
+        for (std::size_t k = begin; k < end; ++k) f(rows_[k]);
       }
       pool.sync();
     }
@@ -335,10 +336,10 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
 
   pool.run([&](int t) {
     // Warm start: the last step's impulses, applied again.
-    byColour(t, [&](Row& r) {
+    byStrip(t, [&](Row& r) {
       if (r.lambdaN != 0.0 || r.lambdaT != 0.0) applyRow(s, r, r.lambdaN, r.lambdaT);
     });
-    for (int it = 0; it < iterations; ++it) byColour(t, [&](Row& r) { solveRow(s, r); });
+    for (int it = 0; it < iterations; ++it) byStrip(t, [&](Row& r) { solveRow(s, r); });
 
     const auto [b, e] = part(n, t, threads);
     for (std::size_t i = b; i < e; ++i) s.position[i] += s.dt * s.velocity[i];
@@ -350,7 +351,7 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
     for (int pass = 0; pass < passes; ++pass) {
       char& mine = moved[static_cast<std::size_t>(t)][static_cast<std::size_t>(pass % 2)];
       mine = 0;
-      byColour(t, [&](const Row& r) {
+      byStrip(t, [&](const Row& r) {
         const double overlap = projectRow(s, r);
         if (pass == 0) deepest = std::max(deepest, overlap);
         if (overlap > kOverlapTolerance * r.reach) mine = 1;

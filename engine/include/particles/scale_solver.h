@@ -2,8 +2,8 @@
 // SolverSettings::scaleThreshold balls, World hands its contact, position
 // and overlap stages to this solver. Contacts are found once per step with a
 // margin, solved as accumulated impulses warm-started from the previous
-// step, in graph-colour order so that threads can share each colour; the
-// result is bit-identical for every thread count.
+// step, Gauss-Seidel in vertical strips so that threads can share the strips
+// of one parity; the result is bit-identical for every thread count.
 #pragma once
 
 #include <cstdint>
@@ -64,22 +64,20 @@ class ScaleSolver {
 
  private:
   void findRows(const ScaleBodies& bodies, ThreadPool& pool);
-  void colour(std::size_t balls);
+  void partition(const ScaleBodies& bodies);
 
   // Rows of this step in key order (each thread fills its own range of balls).
   std::vector<std::vector<Row>> found_;
-  std::vector<Row> rows_;            // in solve order: by colour, then key
-  std::vector<int> colourStart_;     // rows_ of colour c: [colourStart_[c], colourStart_[c+1])
-  std::vector<std::uint64_t> used_;  // per ball: colours taken by its rows
-  std::vector<int> slot_;            // per row in key order: its index in rows_
+  std::vector<Row> rows_;        // in solve order: by strip, then key
+  std::vector<int> stripStart_;  // rows_ of strip k: [stripStart_[k], stripStart_[k+1])
+  std::vector<int> stripOf_;     // per ball: its vertical strip
+  std::vector<int> slot_;        // per row in key order: its index in rows_
   // The last step's accumulated impulses, by key (sorted).
   std::vector<std::uint64_t> lastKey_;
   std::vector<double> lastN_, lastT_;
   // Grid (counting sort of balls into cells).
   std::vector<int> cellStart_, cellBalls_, ballCell_;
-  int gridCols_ = 0, gridRows_ = 0;
-  double cell_ = 0.0;
-  Vec2 lo_{0.0, 0.0};
+  int gridCols_ = 0;  // columns of this step's grid
   PoolHandle pool_;
 };
 

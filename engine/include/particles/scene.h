@@ -90,7 +90,7 @@ struct SolverSettings {
   // Ball count from which the large-scene path replaces the three contact
   // stages (docs/scale.md): contacts found once per step with a margin,
   // accumulated impulses warm-started across steps, a fixed number of
-  // iterations in graph-colour order, shared by `threads`. Below it (every
+  // Gauss-Seidel iterations in vertical strips shared by `threads`. Below it (every
   // example scene, every isolated impact) the step is exactly the one of
   // docs/physics.md. Measured on the pile (docs/scale.md).
   int scaleThreshold = 1000;
