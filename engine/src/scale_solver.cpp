@@ -33,14 +33,15 @@ std::pair<std::size_t, std::size_t> part(std::size_t n, int t, int threads) {
 // Applies P = dn n + dt tau to the two bodies of a row (b < 0: a wall, which
 // takes nothing). Signs as in contact_impulse_impl.h: b gets +P, a gets -P,
 // and both spins change by -r dt / J.
-inline void applyRow(const ScaleBodies& s, const ScaleSolver::Row& r, double dn, double dt) {
+inline void applyRow(ScaleSolver::Motion* m, const ScaleSolver::Row& r, double dn, double dt) {
   const Vec2 p = dn * r.normal + dt * perpLeft(r.normal);
-  const int a = r.a;
-  s.velocity[a] -= s.invMass[a] * p;
-  s.angularVelocity[a] -= s.radius[a] * dt * s.invInertia[a];
+  ScaleSolver::Motion& a = m[r.a];
+  a.velocity -= a.invMass * p;
+  a.angularVelocity -= a.radius * dt * a.invInertia;
   if (r.b >= 0) {
-    s.velocity[r.b] += s.invMass[r.b] * p;
-    s.angularVelocity[r.b] -= s.radius[r.b] * dt * s.invInertia[r.b];
+    ScaleSolver::Motion& b = m[r.b];
+    b.velocity += b.invMass * p;
+    b.angularVelocity -= b.radius * dt * b.invInertia;
   }
 }
 
@@ -48,14 +49,14 @@ inline void applyRow(const ScaleBodies& s, const ScaleSolver::Row& r, double dn,
 // friction first (bounded by the normal impulse it has so far), then the
 // normal impulse, which never pulls (lambdaN >= 0) and brings the normal
 // relative velocity up to at least `target`.
-inline void solveRow(const ScaleBodies& s, ScaleSolver::Row& r) {
-  const int a = r.a, b = r.b;
-  const Vec2 vb = b >= 0 ? s.velocity[b] : Vec2::Zero();
-  const Vec2 dv = vb - s.velocity[a];
+inline void solveRow(ScaleSolver::Motion* m, ScaleSolver::Row& r) {
+  const ScaleSolver::Motion& a = m[r.a];
+  const bool ball = r.b >= 0;
   double dt = 0.0;
   if (r.friction > 0.0) {
-    const double wb = b >= 0 ? s.angularVelocity[b] * s.radius[b] : 0.0;
-    const double gt = dv.dot(perpLeft(r.normal)) - wb - s.angularVelocity[a] * s.radius[a];
+    const Vec2 dv = (ball ? m[r.b].velocity : Vec2::Zero()) - a.velocity;
+    const double wb = ball ? m[r.b].angularVelocity * m[r.b].radius : 0.0;
+    const double gt = dv.dot(perpLeft(r.normal)) - wb - a.angularVelocity * a.radius;
     double lt = r.lambdaT - gt * r.massT;
     if (!std::isinf(r.friction)) {
       const double bound = r.friction * r.lambdaN;
@@ -63,14 +64,14 @@ inline void solveRow(const ScaleBodies& s, ScaleSolver::Row& r) {
     }
     dt = lt - r.lambdaT;
     r.lambdaT = lt;
-    if (dt != 0.0) applyRow(s, r, 0.0, dt);
+    if (dt != 0.0) applyRow(m, r, 0.0, dt);
   }
-  const Vec2 dv2 = (b >= 0 ? s.velocity[b] : Vec2::Zero()) - s.velocity[a];
-  const double gn = dv2.dot(r.normal);
+  const Vec2 dv = (ball ? m[r.b].velocity : Vec2::Zero()) - a.velocity;
+  const double gn = dv.dot(r.normal);
   const double ln = std::max(0.0, r.lambdaN + (r.target - gn) * r.massN);
   const double dn = ln - r.lambdaN;
   r.lambdaN = ln;
-  if (dn != 0.0) applyRow(s, r, dn, 0.0);
+  if (dn != 0.0) applyRow(m, r, dn, 0.0);
 }
 
 // Moves a row's bodies apart by their whole overlap, shared by inverse mass
@@ -108,9 +109,10 @@ void ScaleSolver::reset() {
 
 std::size_t ScaleSolver::memoryBytes() const {
   std::size_t bytes =
-      sizeof(Row) * rows_.capacity() + sizeof(int) * stripStart_.capacity() +
-      sizeof(std::uint64_t) * lastKey_.capacity() + sizeof(int) * stripOf_.capacity() +
-      sizeof(int) * slot_.capacity() + sizeof(double) * (lastN_.capacity() + lastT_.capacity()) +
+      sizeof(Row) * rows_.capacity() + sizeof(Motion) * motion_.capacity() +
+      sizeof(int) * stripStart_.capacity() + sizeof(std::uint64_t) * lastKey_.capacity() +
+      sizeof(int) * stripOf_.capacity() + sizeof(int) * slot_.capacity() +
+      sizeof(double) * (lastN_.capacity() + lastT_.capacity()) +
       sizeof(int) * (cellStart_.capacity() + cellBalls_.capacity() + ballCell_.capacity()) +
       sizeof(std::vector<Row>) * found_.capacity();
   for (const std::vector<Row>& f : found_) bytes += sizeof(Row) * f.capacity();
@@ -239,8 +241,17 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
       std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(),
                 [](const Row& p, const Row& q) { return p.b < q.b; });
       for (std::size_t w = 0; w < s.walls.size(); ++w) {
+        // A ball outside the wall's box grown by its reach cannot touch it:
+        // most balls of a pile skip the segment distance altogether.
+        const WallDef& wall = s.walls[w];
+        const double grow = ra + margin;
+        if (xa.x() + grow < std::min(wall.a.x(), wall.b.x()) ||
+            xa.x() - grow > std::max(wall.a.x(), wall.b.x()) ||
+            xa.y() + grow < std::min(wall.a.y(), wall.b.y()) ||
+            xa.y() - grow > std::max(wall.a.y(), wall.b.y()))
+          continue;
         WallHit hit;
-        if (!touchWall(xa, ra + margin, s.walls[w], hit)) continue;
+        if (!touchWall(xa, ra + margin, wall, hit)) continue;
         const double dist = ra + margin - hit.overlap;
         makeRow(a, -1 - static_cast<int>(w), hit.normal, dist, ra,
                 mixMaterials(s.material[ia], s.wallMaterial[w]));
@@ -334,14 +345,25 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
     }
   };
 
+  motion_.resize(n);
+  Motion* m = motion_.data();
   pool.run([&](int t) {
+    // Each ball's velocity and mass properties in one cache line: a row
+    // touches two of them, in an order the strips decide.
+    const auto [b, e] = part(n, t, threads);
+    for (std::size_t i = b; i < e; ++i)
+      m[i] = {s.velocity[i], s.angularVelocity[i], s.invMass[i], s.invInertia[i], s.radius[i]};
+    pool.sync();
     // Warm start: the last step's impulses, applied again.
     byStrip(t, [&](Row& r) {
-      if (r.lambdaN != 0.0 || r.lambdaT != 0.0) applyRow(s, r, r.lambdaN, r.lambdaT);
+      if (r.lambdaN != 0.0 || r.lambdaT != 0.0) applyRow(m, r, r.lambdaN, r.lambdaT);
     });
-    for (int it = 0; it < iterations; ++it) byStrip(t, [&](Row& r) { solveRow(s, r); });
+    for (int it = 0; it < iterations; ++it) byStrip(t, [&](Row& r) { solveRow(m, r); });
 
-    const auto [b, e] = part(n, t, threads);
+    for (std::size_t i = b; i < e; ++i) {
+      s.velocity[i] = m[i].velocity;
+      s.angularVelocity[i] = m[i].angularVelocity;
+    }
     for (std::size_t i = b; i < e; ++i) s.position[i] += s.dt * s.velocity[i];
     if (s.spin)
       for (std::size_t i = b; i < e; ++i) s.angle[i] += s.dt * s.angularVelocity[i];

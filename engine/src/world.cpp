@@ -105,7 +105,8 @@ std::size_t World::memoryBytes() const {
          heapBytes(velocity_) + heapBytes(angle_) + heapBytes(angularVelocity_) +
          heapBytes(radius_) + heapBytes(invMass_) + heapBytes(invInertia_) + heapBytes(material_) +
          heapBytes(wallMaterial_) + heapBytes(forcedVelocity_) + heapBytes(pairs_) +
-         heapBytes(wallHits_) + broadPhase_.memoryBytes() + heapBytes(impacts_);
+         heapBytes(wallHits_) + broadPhase_.memoryBytes() + heapBytes(impacts_) +
+         scaleSolver_.memoryBytes();
 }
 
 void World::setPullTarget(std::size_t force, const Vec2& target) {

@@ -62,6 +62,15 @@ class ScaleSolver {
     std::uint64_t key = 0;  // (a, b) for warm starting, in the contact order
   };
 
+  // A ball as the velocity iterations see it, packed in 48 bytes.
+  struct Motion {
+    Vec2 velocity{0.0, 0.0};       // m/s
+    double angularVelocity = 0.0;  // rad/s
+    double invMass = 0.0;          // 1/kg
+    double invInertia = 0.0;       // 1/(kg m^2)
+    double radius = 0.0;           // m, the lever arm
+  };
+
  private:
   void findRows(const ScaleBodies& bodies, ThreadPool& pool);
   void partition(const ScaleBodies& bodies);
@@ -71,6 +80,7 @@ class ScaleSolver {
   std::vector<Row> rows_;        // in solve order: by strip, then key
   std::vector<int> stripStart_;  // rows_ of strip k: [stripStart_[k], stripStart_[k+1])
   std::vector<int> stripOf_;     // per ball: its vertical strip
+  std::vector<Motion> motion_;   // per ball, during the velocity iterations
   std::vector<int> slot_;        // per row in key order: its index in rows_
   // The last step's accumulated impulses, by key (sorted).
   std::vector<std::uint64_t> lastKey_;
