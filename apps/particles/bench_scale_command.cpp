@@ -178,6 +178,18 @@ void addScaleBenchOptions(CLI::App& bench, ScaleBenchOptions& o) {
   bench
       .add_option("--csv", o.csv, "Write the figures as CSV to FILE (default pile.csv; '' = none)")
       ->type_name("FILE");
+  bench
+      .add_option("--iterations", o.iterations,
+                  "Engine velocity iterations per step on the large-scene path (default: "
+                  "SolverSettings::scaleVelocityIterations, 8)")
+      ->type_name("K")
+      ->check(integerInRange(1, 10000));
+  bench
+      .add_option("--position-passes", o.positionPasses,
+                  "Engine overlap-removal passes per step on the large-scene path (default: "
+                  "SolverSettings::scalePositionPasses, 4)")
+      ->type_name("P")
+      ->check(integerInRange(1, 10000));
   bench.add_option("--seed", o.seed, "Seed of the grid's jitter and radii (default 20261201)")
       ->type_name("SEED")
       ->check(unsigned64());
@@ -212,7 +224,9 @@ int runScaleBench(const ScaleBenchOptions& o) {
     }
     for (const int t : o.threads) {
       params.threads = t;
-      const SceneDef scene = pile::makePile(params);
+      SceneDef scene = pile::makePile(params);
+      if (o.iterations > 0) scene.solver.scaleVelocityIterations = o.iterations;
+      if (o.positionPasses > 0) scene.solver.scalePositionPasses = o.positionPasses;
       World world(scene);
       RunFigures f = measure(world, scene, o.steps);
       f.engine = "engine";

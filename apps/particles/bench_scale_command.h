@@ -22,6 +22,8 @@ struct ScaleBenchOptions {
   bool noBox2D = false;                  // --no-box2d: engine only
   std::string csv = "pile.csv";          // --csv: where the CSV goes ("" = none)
   std::uint64_t seed = 20261201;         // --seed: the grid's jitter and radii
+  int iterations = 0;      // --iterations: SolverSettings::scaleVelocityIterations (0 = default)
+  int positionPasses = 0;  // --position-passes: SolverSettings::scalePositionPasses (0 = default)
 };
 
 // Registers the options above on the `bench` subcommand.
