@@ -1,22 +1,64 @@
-// particles bench: registers the subcommand; the work is in
-// bench_timestep_command.cpp (run time against error, skip study).
+// particles bench: registers the subcommand. Two benchmarks share it:
+// without --scale, run time against error of the time-stepped catalogue
+// (bench_timestep_command.cpp); with --scale, the many-ball pile
+// (bench_scale_command.cpp). Each one's options are refused with the other,
+// so a typo never silently runs the wrong benchmark.
 #include <CLI/CLI.hpp>
+#include <array>
 #include <memory>
+#include <string_view>
 
+#include "bench_scale_command.h"
 #include "bench_timestep_command.h"
 #include "cli_common.h"
 #include "commands.h"
 
 namespace particles::cli {
+namespace {
+
+constexpr std::array<std::string_view, 8> kScaleOnly{
+    "--n", "--threads", "--poly", "--steps", "--no-box2d", "--iterations", "--position-passes",
+    "--seed"};
+constexpr std::array<std::string_view, 6> kTimestepOnly{"--repeats", "--full",          "--scene",
+                                                        "--skip-csv", "--no-skip-study", "--report"};
+
+// The first option of `names` given on the command line, or "".
+template <std::size_t N>
+std::string givenOption(const CLI::App& cmd, const std::array<std::string_view, N>& names) {
+  for (std::string_view name : names)
+    if (cmd.get_option(std::string(name))->count() > 0) return std::string(name);
+  return "";
+}
+
+}  // namespace
 
 void addBenchCommand(CLI::App& app, CommandAction& action) {
   CLI::App* cmd = app.add_subcommand(
-      "bench", "Run time against error of the time-stepped catalogue, engine vs Box2D");
+      "bench",
+      "Run time against error of the time-stepped catalogue, engine vs Box2D; with --scale, the "
+      "pile of N disks, engine vs Box2D");
   auto timestep = std::make_shared<TimestepBenchOptions>();
-  addTimestepBenchOptions(*cmd, *timestep);
-  cmd->callback([timestep, &action] {
-    action = [timestep] {
+  auto scale = std::make_shared<ScaleBenchOptions>();
+  addTimestepBenchOptions(*cmd, *timestep);  // registers --csv, shared by both
+  addScaleBenchOptions(*cmd, *scale);
+  cmd->callback([cmd, timestep, scale, &action] {
+    const bool csvGiven = cmd->get_option("--csv")->count() > 0;
+    const std::string misplaced = scale->scale ? givenOption(*cmd, kTimestepOnly)
+                                               : givenOption(*cmd, kScaleOnly);
+    action = [timestep, scale, csvGiven, misplaced] {
+      if (!misplaced.empty()) {
+        printError("bench: " + misplaced +
+                   (scale->scale ? " is an option of the catalogue benchmark, not of --scale"
+                                 : " needs --scale (the pile benchmark)") +
+                   " (see 'particles bench --help')");
+        return kExitBadInput;
+      }
       try {
+        if (scale->scale) {
+          ScaleBenchOptions o = *scale;
+          if (csvGiven) o.csv = timestep->csv;  // else the pile's own default, pile.csv
+          return runScaleBench(o);
+        }
         return runTimestepBench(*timestep);
       } catch (const std::exception& e) {
         printError(std::string("internal error: ") + e.what());

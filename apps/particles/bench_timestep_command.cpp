@@ -150,7 +150,9 @@ void addTimestepBenchOptions(CLI::App& bench, TimestepBenchOptions& o) {
       ->type_name("NAME")
       ->check(CLI::IsMember({"bounce", "slide_roll", "incline_roll", "oblique_spin", "pull",
                              "cradle", "billiards", "pile", "gas"}));
-  bench.add_option("--csv", o.csv, "The sweep as CSV, one row per configuration")
+  bench.add_option("--csv", o.csv,
+                   "The sweep as CSV, one row per configuration (with --scale: the pile's figures, "
+                   "default pile.csv)")
       ->type_name("FILE")
       ->default_val(o.csv);
   bench.add_option("--skip-csv", o.skipCsv, "The skip study as CSV")

@@ -14,6 +14,7 @@ constexpr const char* kFooter = R"(Commands:
   particles merge DIR... [--report DIR]               combine the reports of suite --shard
   particles bench [--full] [--report DIR]             run time against error, engine vs Box2D
   particles stress [--long] [--report DIR]            stability envelope, broken cases as scenes
+  particles bench --scale [--n N...] [--threads T...] the pile benchmark, engine vs Box2D
 'particles COMMAND --help' explains each command's options and output.
 Units are SI throughout: metres, kilograms, seconds, radians.
 Exit status: 0 success; 1 the simulation diverged (non-finite state), the

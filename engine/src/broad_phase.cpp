@@ -147,6 +147,11 @@ void BroadPhase::findPairs(std::span<const Vec2> position, std::span<const doubl
   });
 }
 
+std::size_t BroadPhase::memoryBytes() const {
+  return sizeof(int) * (cellStart_.capacity() + cellBalls_.capacity() + cellFill_.capacity() +
+                        ballCell_.capacity());
+}
+
 void findWallHits(std::span<const Vec2> position, std::span<const double> radius,
                   std::span<const WallDef> walls, std::vector<WallHit>& out) {
   out.clear();

@@ -83,10 +83,32 @@ void World::reset(const SceneDef& scene) {
   plan_.tangential = gripBalls >= 2 || (gripBalls >= 1 && gripWalls);
   plan_.spin = spinning || plan_.tangential || plan_.torques;
   plan_.grid = static_cast<int>(scene.balls.size()) >= scene.solver.gridThreshold;
+  // The mutants are the small-scene solver with one sign changed; they never
+  // take the large-scene path.
+  plan_.scale = static_cast<int>(scene.balls.size()) >= scene.solver.scaleThreshold &&
+                scene.solver.mutation == Mutation::None;
+  scaleSolver_.reset();
 }
 
 BallState World::ball(std::size_t i) const {
   return {position_[i], velocity_[i], angle_[i], angularVelocity_[i]};
+}
+
+namespace {
+template <typename T>
+std::size_t heapBytes(const std::vector<T>& v) {
+  return v.capacity() * sizeof(T);
+}
+}  // namespace
+
+std::size_t World::memoryBytes() const {
+  return sizeof(World) + heapBytes(scene_.balls) + heapBytes(scene_.walls) +
+         heapBytes(scene_.forces) + scene_.name.capacity() + heapBytes(position_) +
+         heapBytes(velocity_) + heapBytes(angle_) + heapBytes(angularVelocity_) +
+         heapBytes(radius_) + heapBytes(invMass_) + heapBytes(invInertia_) + heapBytes(material_) +
+         heapBytes(wallMaterial_) + heapBytes(forcedVelocity_) + heapBytes(pairs_) +
+         heapBytes(wallHits_) + broadPhase_.memoryBytes() + heapBytes(impacts_) +
+         scaleSolver_.memoryBytes();
 }
 
 void World::setPullTarget(std::size_t force, const Vec2& target) {
@@ -102,9 +124,13 @@ void World::run(long long steps) {
 // the post-impact velocities, then overlap removal.
 void World::step() {
   applyForces();
-  resolveContacts();
-  integratePositions();
-  correctOverlaps();
+  if (plan_.scale) {
+    scaleStep();  // the next three stages for a large scene (docs/scale.md)
+  } else {
+    resolveContacts();
+    integratePositions();
+    correctOverlaps();
+  }
   ++stepIndex_;
   ++stats_.steps;
 }
@@ -127,6 +153,24 @@ void World::applyForces() {
     }
   }
   for (std::size_t i = 0; i < velocity_.size(); ++i) velocity_[i] += forcedVelocity_[i];
+}
+
+void World::scaleStep() {
+  ScaleBodies b;
+  b.position = position_;
+  b.velocity = velocity_;
+  b.angle = angle_;
+  b.angularVelocity = angularVelocity_;
+  b.radius = radius_;
+  b.invMass = invMass_;
+  b.invInertia = invInertia_;
+  b.material = material_;
+  if (plan_.gravity || plan_.forces) b.forcedVelocity = forcedVelocity_;
+  b.walls = scene_.walls;
+  b.wallMaterial = wallMaterial_;
+  b.dt = dt_;
+  b.spin = plan_.spin;
+  scaleSolver_.step(b, scene_.solver, stats_, recordImpacts_ ? &impacts_ : nullptr);
 }
 
 void World::findBallContacts(std::vector<BallPair>& out) {

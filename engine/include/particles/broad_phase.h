@@ -43,6 +43,8 @@ class BroadPhase {
  public:
   void findPairs(std::span<const Vec2> position, std::span<const double> radius,
                  std::vector<BallPair>& out);
+  // Bytes held by the grid's buffers (their capacity).
+  std::size_t memoryBytes() const;
 
  private:
   std::vector<int> cellStart_;  // prefix sums over cells (counting sort)

@@ -90,8 +90,26 @@ struct SolverSettings {
   // after. Off by default: it changes results (every wall bounce then happens
   // at its time of impact instead of up to a step late), so the golden state
   // hashes and the comparison with Box2D keep the discrete step; scene files
-  // cannot set it. Ball-ball contacts are not swept.
+  // cannot set it. Ball-ball contacts are not swept, and the large-scene
+  // path (scaleThreshold) does not sweep at all: its contact margin is its
+  // guard against tunnelling (docs/scale.md).
   bool sweptWalls = false;
+  // Worker threads of the step (>= 1; docs/scale.md). The result is
+  // bit-identical for every count: threads only share work whose order does
+  // not matter. Scene files cannot set it.
+  int threads = 1;
+  // Ball count from which the large-scene path replaces the three contact
+  // stages (docs/scale.md): contacts found once per step with a margin,
+  // accumulated impulses warm-started across steps, a fixed number of
+  // Gauss-Seidel iterations in vertical strips shared by `threads`. Below it (every
+  // example scene, every isolated impact) the step is exactly the one of
+  // docs/physics.md. Measured on the pile (docs/scale.md).
+  int scaleThreshold = 1000;
+  // Velocity iterations per step of the large-scene path (count).
+  int scaleVelocityIterations = 8;
+  // Upper bound on overlap-removal passes of the large-scene path (count);
+  // passes stop as soon as one moves nothing.
+  int scalePositionPasses = 4;
   // A deliberately wrong solver, for the comparison suite's mutation check
   // only. Scene files cannot set it.
   Mutation mutation = Mutation::None;

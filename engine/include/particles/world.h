@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "particles/broad_phase.h"
+#include "particles/scale_solver.h"
 #include "particles/scene.h"
 
 namespace particles {
@@ -51,6 +52,7 @@ struct StagePlan {
   bool gravity = false;     // non-zero gravity
   bool spin = false;        // anything can rotate: otherwise angles are not integrated
   bool grid = false;        // uniform grid instead of brute-force pairs
+  bool scale = false;       // the large-scene path (SolverSettings::scaleThreshold)
 };
 
 class World {
@@ -72,6 +74,10 @@ class World {
   const StepStats& stats() const { return stats_; }
   const StagePlan& plan() const { return plan_; }
   const SceneDef& scene() const { return scene_; }
+  // Bytes this world holds: the object itself and the capacity of every
+  // container it owns (state, scene copy, scratch, grid). Measured from the
+  // containers, not the process, so it is exact and repeatable.
+  std::size_t memoryBytes() const;
 
   // Replaces the target of a pull force (the viewer's mouse drag).
   void setPullTarget(std::size_t force, const Vec2& target);
@@ -88,6 +94,7 @@ class World {
   void resolveContactsAs();
   void integratePositions();
   void correctOverlaps();
+  void scaleStep();
 
   void findBallContacts(std::vector<BallPair>& out);
   void addSweptWallHits();
@@ -114,6 +121,7 @@ class World {
   std::vector<BallPair> pairs_;
   std::vector<WallHit> wallHits_;
   BroadPhase broadPhase_;
+  ScaleSolver scaleSolver_;  // the large-scene path's contacts and warm-start impulses
 
   bool recordImpacts_ = false;
   std::vector<ImpactEvent> impacts_;

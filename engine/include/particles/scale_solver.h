@@ -1,0 +1,94 @@
+// The large-scene path of the step (docs/scale.md): for scenes of at least
+// SolverSettings::scaleThreshold balls, World hands its contact, position
+// and overlap stages to this solver. Contacts are found once per step with a
+// margin, solved as accumulated impulses warm-started from the previous
+// step, Gauss-Seidel in vertical strips so that threads can share the strips
+// of one parity; the result is bit-identical for every thread count.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "particles/material.h"
+#include "particles/scene.h"
+#include "particles/thread_pool.h"
+#include "particles/types.h"
+
+namespace particles {
+
+struct ImpactEvent;
+struct StepStats;
+
+// The World's per-ball arrays, as the solver reads and writes them.
+struct ScaleBodies {
+  std::span<Vec2> position;            // m
+  std::span<Vec2> velocity;            // m/s
+  std::span<double> angle;             // rad
+  std::span<double> angularVelocity;   // rad/s
+  std::span<const double> radius;      // m
+  std::span<const double> invMass;     // 1/kg
+  std::span<const double> invInertia;  // 1/(kg m^2)
+  std::span<const ContactMaterial> material;
+  std::span<const Vec2> forcedVelocity;  // m/s, this step's forces; empty = none
+  std::span<const WallDef> walls;
+  std::span<const ContactMaterial> wallMaterial;
+  double dt = 0.0;    // s
+  bool spin = false;  // integrate angles
+};
+
+class ScaleSolver {
+ public:
+  // Forgets the previous step's impulses (a new scene).
+  void reset();
+  // Contacts, positions and overlap removal of one step. `impacts` (when not
+  // null) receives the contacts that exchanged an impulse.
+  void step(const ScaleBodies& bodies, const SolverSettings& settings, StepStats& stats,
+            std::vector<ImpactEvent>* impacts);
+  std::size_t memoryBytes() const;
+
+  // One contact row: a ball pair, or a ball and a wall (b < 0).
+  struct Row {
+    int a = 0;
+    int b = 0;              // ball index, or -1 - wall index
+    Vec2 normal{1.0, 0.0};  // unit, from a to b
+    double reach = 0.0;     // m, r_a + r_b (ball pair) or r_a (wall)
+    double massN = 0.0;     // kg, 1 / (1/m_a + 1/m_b)
+    double massT = 0.0;     // kg, 1 / (1/m_a + 1/m_b + r_a^2/J_a + r_b^2/J_b)
+    double friction = 0.0;  // mixed mu
+    double target = 0.0;    // m/s, the least normal relative velocity allowed
+    double lambdaN = 0.0;   // N s, accumulated normal impulse (>= 0)
+    double lambdaT = 0.0;   // N s, accumulated tangential impulse
+    std::uint64_t key = 0;  // (a, b) for warm starting, in the contact order
+  };
+
+  // A ball as the velocity iterations see it, packed in 48 bytes.
+  struct Motion {
+    Vec2 velocity{0.0, 0.0};       // m/s
+    double angularVelocity = 0.0;  // rad/s
+    double invMass = 0.0;          // 1/kg
+    double invInertia = 0.0;       // 1/(kg m^2)
+    double radius = 0.0;           // m, the lever arm
+  };
+
+ private:
+  void findRows(const ScaleBodies& bodies, ThreadPool& pool);
+  void partition(const ScaleBodies& bodies);
+
+  // Rows of this step in key order (each thread fills its own range of balls).
+  std::vector<std::vector<Row>> found_;
+  std::vector<Row> rows_;        // in solve order: by strip, then key
+  std::vector<int> stripStart_;  // rows_ of strip k: [stripStart_[k], stripStart_[k+1])
+  std::vector<int> stripOf_;     // per ball: its vertical strip
+  std::vector<Motion> motion_;   // per ball, during the velocity iterations
+  std::vector<int> slot_;        // per row in key order: its index in rows_
+  // The last step's accumulated impulses, by key (sorted).
+  std::vector<std::uint64_t> lastKey_;
+  std::vector<double> lastN_, lastT_;
+  // Grid (counting sort of balls into cells).
+  std::vector<int> cellStart_, cellBalls_, ballCell_;
+  int gridCols_ = 0;  // columns of this step's grid
+  PoolHandle pool_;
+};
+
+}  // namespace particles

@@ -1,0 +1,63 @@
+// A small pool of worker threads for the large-scene step (docs/scale.md).
+// run(job) calls job(t) once on each of size() threads (t = 0 on the caller)
+// and returns when all are done; inside a job, sync() is a barrier of all
+// size() threads. Work is split by index ranges that do not depend on
+// timing, so results never depend on how the threads were scheduled.
+#pragma once
+
+#include <barrier>
+#include <condition_variable>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace particles {
+
+class ThreadPool {
+ public:
+  explicit ThreadPool(int threads);  // threads >= 1; threads - 1 workers are started
+  ~ThreadPool();
+  ThreadPool(const ThreadPool&) = delete;
+  ThreadPool& operator=(const ThreadPool&) = delete;
+
+  int size() const { return size_; }
+  void run(const std::function<void(int)>& job);
+  void sync();
+
+ private:
+  void work(int index);
+
+  int size_;
+  std::barrier<> barrier_;
+  std::mutex mutex_;
+  std::condition_variable wake_, done_;
+  const std::function<void(int)>* job_ = nullptr;
+  long long generation_ = 0;
+  int running_ = 0;
+  bool stop_ = false;
+  std::vector<std::thread> workers_;
+};
+
+// A pool owned by a copyable object: a copy starts without a pool and makes
+// its own when first asked, so copies never share threads.
+class PoolHandle {
+ public:
+  PoolHandle() = default;
+  PoolHandle(const PoolHandle&) {}
+  PoolHandle& operator=(const PoolHandle&) { return *this; }
+  PoolHandle(PoolHandle&&) noexcept = default;
+  PoolHandle& operator=(PoolHandle&&) noexcept = default;
+
+  // The pool with `threads` threads, made (or remade) on demand.
+  ThreadPool& get(int threads) {
+    if (!pool_ || pool_->size() != threads) pool_ = std::make_unique<ThreadPool>(threads);
+    return *pool_;
+  }
+
+ private:
+  std::unique_ptr<ThreadPool> pool_;
+};
+
+}  // namespace particles

@@ -1,0 +1,421 @@
+#include "particles/scale_solver.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "particles/broad_phase.h"
+#include "particles/world.h"
+
+namespace particles {
+namespace {
+
+// The same contact test as the broad phase (broad_phase.cpp) and the same
+// rounding floor as the small-scene overlap removal (world.cpp).
+constexpr double kTouchSlop = 1e-9;
+constexpr double kOverlapTolerance = 1e-9;
+// Pairs closer than this fraction of the largest radius (beyond touching)
+// become rows too: "speculative" rows that let the two approach by at most
+// their gap within the step, so that a contact that closes during the step
+// is caught by the velocity solve and then by the overlap removal, with one
+// pair search per step.
+constexpr double kMarginFraction = 0.2;
+// Upper bound on the strips of the parallel solve (even: a fixed number, so
+// that no result depends on the thread count).
+constexpr int kMaxStrips = 32;
+// Grid columns per strip, at least: within a strip the rows are solved in
+// key order, which for a pile numbered row by row from the bottom is close
+// to bottom-up; wider strips keep more of that order. Measured on the pile
+// (docs/scale.md): 1 column, 12.8 % max overlap at N = 10,000; 4, 10.6 %;
+// 8, 8.0 %; 16, 9.5 %.
+constexpr int kStripColumns = 8;
+
+// Items [begin, end) of part t of T: a split by index only, never by timing.
+std::pair<std::size_t, std::size_t> part(std::size_t n, int t, int threads) {
+  const std::size_t tt = static_cast<std::size_t>(t), tn = static_cast<std::size_t>(threads);
+  return {n * tt / tn, n * (tt + 1) / tn};
+}
+
+// Applies P = dn n + dt tau to the two bodies of a row (b < 0: a wall, which
+// takes nothing). Signs as in contact_impulse_impl.h: b gets +P, a gets -P,
+// and both spins change by -r dt / J.
+inline void applyRow(ScaleSolver::Motion* m, const ScaleSolver::Row& r, double dn, double dt) {
+  const Vec2 p = dn * r.normal + dt * perpLeft(r.normal);
+  ScaleSolver::Motion& a = m[r.a];
+  a.velocity -= a.invMass * p;
+  a.angularVelocity -= a.radius * dt * a.invInertia;
+  if (r.b >= 0) {
+    ScaleSolver::Motion& b = m[r.b];
+    b.velocity += b.invMass * p;
+    b.angularVelocity -= b.radius * dt * b.invInertia;
+  }
+}
+
+// One projected Gauss-Seidel update of a row's accumulated impulses:
+// friction first (bounded by the normal impulse it has so far), then the
+// normal impulse, which never pulls (lambdaN >= 0) and brings the normal
+// relative velocity up to at least `target`.
+inline void solveRow(ScaleSolver::Motion* m, ScaleSolver::Row& r) {
+  const ScaleSolver::Motion& a = m[r.a];
+  const bool ball = r.b >= 0;
+  double dt = 0.0;
+  if (r.friction > 0.0) {
+    const Vec2 dv = (ball ? m[r.b].velocity : Vec2::Zero()) - a.velocity;
+    const double wb = ball ? m[r.b].angularVelocity * m[r.b].radius : 0.0;
+    const double gt = dv.dot(perpLeft(r.normal)) - wb - a.angularVelocity * a.radius;
+    double lt = r.lambdaT - gt * r.massT;
+    if (!std::isinf(r.friction)) {
+      const double bound = r.friction * r.lambdaN;
+      lt = std::clamp(lt, -bound, bound);
+    }
+    dt = lt - r.lambdaT;
+    r.lambdaT = lt;
+    if (dt != 0.0) applyRow(m, r, 0.0, dt);
+  }
+  const Vec2 dv = (ball ? m[r.b].velocity : Vec2::Zero()) - a.velocity;
+  const double gn = dv.dot(r.normal);
+  const double ln = std::max(0.0, r.lambdaN + (r.target - gn) * r.massN);
+  const double dn = ln - r.lambdaN;
+  r.lambdaN = ln;
+  if (dn != 0.0) applyRow(m, r, dn, 0.0);
+}
+
+// Moves a row's bodies apart by their whole overlap, shared by inverse mass
+// (a wall takes none): the small-scene projection of world.cpp, per row.
+// Returns the overlap found (m, <= 0 when apart).
+inline double projectRow(const ScaleBodies& s, const ScaleSolver::Row& r) {
+  const int a = r.a;
+  if (r.b < 0) {
+    WallHit hit;
+    if (!touchWall(s.position[a], s.radius[a], s.walls[static_cast<std::size_t>(-1 - r.b)], hit))
+      return 0.0;
+    if (hit.overlap <= kOverlapTolerance * r.reach) return hit.overlap;
+    s.position[a] -= hit.overlap * hit.normal;
+    return hit.overlap;
+  }
+  const int b = r.b;
+  const Vec2 d = s.position[b] - s.position[a];
+  const double dist = d.norm();
+  const double overlap = r.reach - dist;
+  if (overlap <= kOverlapTolerance * r.reach) return overlap;
+  const Vec2 n = dist > 0.0 ? Vec2(d / dist) : Vec2(1.0, 0.0);
+  const double share = overlap / (s.invMass[a] + s.invMass[b]);
+  s.position[a] -= share * s.invMass[a] * n;
+  s.position[b] += share * s.invMass[b] * n;
+  return overlap;
+}
+
+}  // namespace
+
+void ScaleSolver::reset() {
+  lastKey_.clear();
+  lastN_.clear();
+  lastT_.clear();
+}
+
+std::size_t ScaleSolver::memoryBytes() const {
+  std::size_t bytes =
+      sizeof(Row) * rows_.capacity() + sizeof(Motion) * motion_.capacity() +
+      sizeof(int) * stripStart_.capacity() + sizeof(std::uint64_t) * lastKey_.capacity() +
+      sizeof(int) * stripOf_.capacity() + sizeof(int) * slot_.capacity() +
+      sizeof(double) * (lastN_.capacity() + lastT_.capacity()) +
+      sizeof(int) * (cellStart_.capacity() + cellBalls_.capacity() + ballCell_.capacity()) +
+      sizeof(std::vector<Row>) * found_.capacity();
+  for (const std::vector<Row>& f : found_) bytes += sizeof(Row) * f.capacity();
+  return bytes;
+}
+
+// The grid: cells as wide as the largest diameter plus the margin, balls
+// counting-sorted into them (in index order within a cell).
+void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
+  const std::size_t n = s.position.size();
+  Vec2 lo = s.position[0], hi = s.position[0];
+  double maxRadius = 0.0;
+  bool finite = true;
+  for (std::size_t i = 0; i < n; ++i) {
+    lo = lo.cwiseMin(s.position[i]);
+    hi = hi.cwiseMax(s.position[i]);
+    maxRadius = std::max(maxRadius, s.radius[i]);
+    finite = finite && s.position[i].allFinite();
+  }
+  const double margin = kMarginFraction * maxRadius;
+  double cell = (2.0 * maxRadius + margin) * (1.0 + 4.0 * kTouchSlop);
+  const Vec2 extent = hi - lo;
+  int cols = 1, rows = 1;
+  // A diverged state (non-finite positions) gets a single cell: no NaN is
+  // ever turned into an index, and NaN distances make no rows.
+  if (finite && extent.allFinite() && maxRadius > 0.0) {
+    const double maxCells = 4.0 * static_cast<double>(n) + 16.0;
+    while ((std::floor(extent.x() / cell) + 1.0) * (std::floor(extent.y() / cell) + 1.0) > maxCells)
+      cell *= 2.0;
+    cols = static_cast<int>(std::floor(extent.x() / cell)) + 1;
+    rows = static_cast<int>(std::floor(extent.y() / cell)) + 1;
+  } else {
+    finite = false;
+  }
+  const double inv = 1.0 / cell;
+  cellStart_.assign(static_cast<std::size_t>(cols) * rows + 1, 0);
+  ballCell_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    int c = 0;
+    if (finite) {
+      const int cx = std::min(cols - 1, static_cast<int>((s.position[i].x() - lo.x()) * inv));
+      const int cy = std::min(rows - 1, static_cast<int>((s.position[i].y() - lo.y()) * inv));
+      c = cy * cols + cx;
+    }
+    ballCell_[i] = c;
+    ++cellStart_[static_cast<std::size_t>(c) + 1];
+  }
+  for (std::size_t c = 1; c < cellStart_.size(); ++c) cellStart_[c] += cellStart_[c - 1];
+  cellBalls_.resize(n);
+  std::vector<int> next(cellStart_.begin(), cellStart_.end() - 1);
+  for (std::size_t i = 0; i < n; ++i)
+    cellBalls_[static_cast<std::size_t>(next[static_cast<std::size_t>(ballCell_[i])]++)] =
+        static_cast<int>(i);
+  gridCols_ = cols;
+
+  const int threads = pool.size();
+  found_.resize(static_cast<std::size_t>(threads));
+  const std::uint64_t wallBase = n;
+  pool.run([&](int t) {
+    std::vector<Row>& out = found_[static_cast<std::size_t>(t)];
+    out.clear();
+    const auto [begin, end] = part(n, t, threads);
+    // The last step's impulses are sorted by key, as these rows are made.
+    auto last =
+        std::lower_bound(lastKey_.begin(), lastKey_.end(), static_cast<std::uint64_t>(begin) << 32);
+    auto makeRow = [&](int a, int b, const Vec2& normal, double dist, double reach,
+                       const ContactMaterial& m) {
+      Row r;
+      r.a = a;
+      r.b = b;
+      r.normal = normal;
+      r.reach = reach;
+      const double invA = s.invMass[a], invB = b >= 0 ? s.invMass[b] : 0.0;
+      r.massN = 1.0 / (invA + invB);
+      r.friction = m.friction;
+      if (m.friction > 0.0) {
+        const double ra = s.radius[a], rb = b >= 0 ? s.radius[b] : 0.0;
+        const double jb = b >= 0 ? rb * rb * s.invInertia[b] : 0.0;
+        r.massT = 1.0 / (invA + invB + ra * ra * s.invInertia[a] + jb);
+      }
+      if (dist > reach * (1.0 + kTouchSlop)) {
+        // Apart: may approach by at most the gap within the step.
+        r.target = -(dist - reach) / s.dt;
+      } else {
+        // Touching: bounce the approach the bodies brought into the step,
+        // cancel what this step's forces added (docs/physics.md).
+        const Vec2 vb = b >= 0 ? s.velocity[b] : Vec2::Zero();
+        const double gn = (vb - s.velocity[a]).dot(normal);
+        double forced = 0.0;
+        if (!s.forcedVelocity.empty()) {
+          const Vec2 fb = b >= 0 ? s.forcedVelocity[b] : Vec2::Zero();
+          forced = (fb - s.forcedVelocity[a]).dot(normal);
+        }
+        const double brought = gn - forced;
+        r.target = brought < 0.0 ? -m.restitution * brought : 0.0;
+      }
+      const std::uint64_t other =
+          b >= 0 ? static_cast<std::uint64_t>(b) : wallBase + static_cast<std::uint64_t>(-1 - b);
+      r.key = (static_cast<std::uint64_t>(a) << 32) | other;
+      out.push_back(r);
+    };
+    for (std::size_t ia = begin; ia < end; ++ia) {
+      const int a = static_cast<int>(ia);
+      const Vec2 xa = s.position[ia];
+      const double ra = s.radius[ia];
+      const std::size_t first = out.size();
+      const int cx = ballCell_[ia] % cols, cy = ballCell_[ia] / cols;
+      for (int y = std::max(0, cy - 1); y <= std::min(rows - 1, cy + 1); ++y) {
+        for (int x = std::max(0, cx - 1); x <= std::min(cols - 1, cx + 1); ++x) {
+          const std::size_t c = static_cast<std::size_t>(y) * cols + x;
+          for (int k = cellStart_[c]; k < cellStart_[c + 1]; ++k) {
+            const int b = cellBalls_[static_cast<std::size_t>(k)];
+            if (b <= a) continue;
+            const Vec2 d = s.position[static_cast<std::size_t>(b)] - xa;
+            const double reach = ra + s.radius[static_cast<std::size_t>(b)];
+            const double limit = reach + margin;
+            const double dist2 = d.squaredNorm();
+            if (dist2 > limit * limit) continue;
+            const double dist = std::sqrt(dist2);
+            makeRow(a, b, dist > 0.0 ? Vec2(d / dist) : Vec2(1.0, 0.0), dist, reach,
+                    mixMaterials(s.material[ia], s.material[static_cast<std::size_t>(b)]));
+          }
+        }
+      }
+      // Key order within the ball: by partner index.
+      std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(),
+                [](const Row& p, const Row& q) { return p.b < q.b; });
+      for (std::size_t w = 0; w < s.walls.size(); ++w) {
+        // A ball outside the wall's box grown by its reach cannot touch it:
+        // most balls of a pile skip the segment distance altogether.
+        const WallDef& wall = s.walls[w];
+        const double grow = ra + margin;
+        if (xa.x() + grow < std::min(wall.a.x(), wall.b.x()) ||
+            xa.x() - grow > std::max(wall.a.x(), wall.b.x()) ||
+            xa.y() + grow < std::min(wall.a.y(), wall.b.y()) ||
+            xa.y() - grow > std::max(wall.a.y(), wall.b.y()))
+          continue;
+        WallHit hit;
+        if (!touchWall(xa, ra + margin, wall, hit)) continue;
+        const double dist = ra + margin - hit.overlap;
+        makeRow(a, -1 - static_cast<int>(w), hit.normal, dist, ra,
+                mixMaterials(s.material[ia], s.wallMaterial[w]));
+      }
+      // Warm start from the last step's row with the same key, if any.
+      for (std::size_t k = first; k < out.size(); ++k) {
+        while (last != lastKey_.end() && *last < out[k].key) ++last;
+        if (last != lastKey_.end() && *last == out[k].key) {
+          const std::size_t j = static_cast<std::size_t>(last - lastKey_.begin());
+          out[k].lambdaN = lastN_[j];
+          out[k].lambdaT = lastT_[j];
+        }
+      }
+    }
+  });
+}
+
+// Rows are split into vertical strips of kStripColumns grid columns, so a row
+// joins balls of the same or of neighbouring strips; a row belongs to the
+// strip of its left ball. Rows of two even strips (or of two odd strips) then
+// share no ball: all even strips can be solved at once, each in key order
+// (Gauss-Seidel), then all odd strips. The strips depend on the positions
+// only, never on the thread count, so the result is the same for any count.
+void ScaleSolver::partition(const ScaleBodies& s) {
+  const std::size_t n = s.position.size();
+  const int strips = std::clamp(gridCols_ / kStripColumns, 1, kMaxStrips);
+  stripOf_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    // Whole grid columns per strip: neighbours are at most one column apart.
+    stripOf_[i] = (ballCell_[i] % gridCols_) * strips / gridCols_;
+  }
+  std::size_t total = 0;
+  for (const std::vector<Row>& f : found_) total += f.size();
+  slot_.resize(total);
+  std::vector<int> count(static_cast<std::size_t>(strips) + 1, 0);
+  std::size_t k = 0;
+  auto stripOfRow = [&](const Row& r) {
+    const int sa = stripOf_[static_cast<std::size_t>(r.a)];
+    return r.b >= 0 ? std::min(sa, stripOf_[static_cast<std::size_t>(r.b)]) : sa;
+  };
+  for (const std::vector<Row>& f : found_)
+    for (const Row& r : f) {
+      const int st = stripOfRow(r);
+      slot_[k++] = st;
+      ++count[static_cast<std::size_t>(st) + 1];
+    }
+  stripStart_.assign(count.begin(), count.end());
+  for (std::size_t c = 1; c < stripStart_.size(); ++c) stripStart_[c] += stripStart_[c - 1];
+  std::vector<int> next(stripStart_.begin(), stripStart_.end() - 1);
+  rows_.resize(total);
+  k = 0;
+  for (const std::vector<Row>& f : found_) {
+    for (const Row& r : f) {
+      const int pos = next[static_cast<std::size_t>(slot_[k])]++;
+      rows_[static_cast<std::size_t>(pos)] = r;
+      slot_[k++] = pos;
+    }
+  }
+}
+
+void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, StepStats& stats,
+                       std::vector<ImpactEvent>* impacts) {
+  ThreadPool& pool = pool_.get(std::max(1, settings.threads));
+  const int threads = pool.size();
+  const std::size_t n = s.position.size();
+  if (n == 0) return;
+  findRows(s, pool);
+  partition(s);
+
+  const int iterations = std::max(1, settings.scaleVelocityIterations);
+  const int passes = std::max(1, settings.scalePositionPasses);
+  std::vector<double> maxOverlap(static_cast<std::size_t>(threads), 0.0);
+  std::vector<std::array<char, 2>> moved(static_cast<std::size_t>(threads), {0, 0});
+  int passesUsed = 0;
+
+  // Runs f on every row: the even strips shared among the threads, then
+  // the odd ones (strips of one parity share no ball).
+  const int strips = static_cast<int>(stripStart_.size()) - 1;
+  auto byStrip = [&](int t, auto&& f) {
+    for (int parity = 0; parity < 2; ++parity) {
+      int index = 0;
+      for (int st = parity; st < strips; st += 2, ++index) {
+        if (index % threads != t) continue;
+        const std::size_t begin =
+            static_cast<std::size_t>(stripStart_[static_cast<std::size_t>(st)]);
+        const std::size_t end =
+            static_cast<std::size_t>(stripStart_[static_cast<std::size_t>(st) + 1]);
+        for (std::size_t k = begin; k < end; ++k) f(rows_[k]);
+      }
+      pool.sync();
+    }
+  };
+
+  motion_.resize(n);
+  Motion* m = motion_.data();
+  pool.run([&](int t) {
+    // Each ball's velocity and mass properties in one cache line: a row
+    // touches two of them, in an order the strips decide.
+    const auto [b, e] = part(n, t, threads);
+    for (std::size_t i = b; i < e; ++i)
+      m[i] = {s.velocity[i], s.angularVelocity[i], s.invMass[i], s.invInertia[i], s.radius[i]};
+    pool.sync();
+    // Warm start: the last step's impulses, applied again.
+    byStrip(t, [&](Row& r) {
+      if (r.lambdaN != 0.0 || r.lambdaT != 0.0) applyRow(m, r, r.lambdaN, r.lambdaT);
+    });
+    for (int it = 0; it < iterations; ++it) byStrip(t, [&](Row& r) { solveRow(m, r); });
+
+    for (std::size_t i = b; i < e; ++i) {
+      s.velocity[i] = m[i].velocity;
+      s.angularVelocity[i] = m[i].angularVelocity;
+    }
+    for (std::size_t i = b; i < e; ++i) s.position[i] += s.dt * s.velocity[i];
+    if (s.spin)
+      for (std::size_t i = b; i < e; ++i) s.angle[i] += s.dt * s.angularVelocity[i];
+    pool.sync();
+
+    double& deepest = maxOverlap[static_cast<std::size_t>(t)];
+    for (int pass = 0; pass < passes; ++pass) {
+      char& mine = moved[static_cast<std::size_t>(t)][static_cast<std::size_t>(pass % 2)];
+      mine = 0;
+      byStrip(t, [&](const Row& r) {
+        const double overlap = projectRow(s, r);
+        if (pass == 0) deepest = std::max(deepest, overlap);
+        if (overlap > kOverlapTolerance * r.reach) mine = 1;
+      });
+      bool any = false;
+      for (const auto& m : moved) any = any || m[static_cast<std::size_t>(pass % 2)] != 0;
+      if (t == 0 && any) passesUsed = pass + 1;
+      if (!any) break;
+      pool.sync();  // nobody rewrites this pass's flags before all have read them
+    }
+  });
+
+  // Keep this step's impulses, in key order, for the next step's warm start.
+  lastKey_.resize(slot_.size());
+  lastN_.resize(slot_.size());
+  lastT_.resize(slot_.size());
+  for (std::size_t k = 0; k < slot_.size(); ++k) {
+    const Row& r = rows_[static_cast<std::size_t>(slot_[k])];
+    lastKey_[k] = r.key;
+    lastN_[k] = r.lambdaN;
+    lastT_[k] = r.lambdaT;
+  }
+  if (impacts) {
+    impacts->clear();
+    for (std::size_t k = 0; k < slot_.size(); ++k) {
+      const Row& r = rows_[static_cast<std::size_t>(slot_[k])];
+      if (r.lambdaN == 0.0) continue;
+      const bool wall = r.b < 0;
+      impacts->push_back({r.a, wall ? -1 - r.b : r.b, wall, r.normal, r.lambdaN, r.lambdaT,
+                          r.friction == 0.0 ? 0.0 : r.friction * r.lambdaN});
+    }
+  }
+  stats.contacts = static_cast<int>(rows_.size());
+  stats.passes = iterations;
+  stats.correctionPasses = passesUsed;
+  stats.maxOverlap = std::max(0.0, *std::max_element(maxOverlap.begin(), maxOverlap.end()));
+}
+
+}  // namespace particles

@@ -1,0 +1,78 @@
+// The large-scene path's impulses checked against the closed forms of
+// docs/physics.md, on scenes forced onto the path (scaleThreshold = 0): a
+// head-on impact of two equal balls, a sliding hit on a floor (Coulomb
+// clamp, spin sign), and a ball resting on a floor under gravity.
+#include <gtest/gtest.h>
+
+#include "particles/world.h"
+
+namespace particles {
+namespace {
+
+SceneDef onScalePath() {
+  SceneDef s;
+  s.dt = 1e-3;
+  s.solver.scaleThreshold = 0;  // every scene takes the large-scene path
+  return s;
+}
+
+BallDef ball(const Vec2& x, const Vec2& v, double r = 0.5, double m = 1.0) {
+  BallDef b;
+  b.position = x;
+  b.velocity = v;
+  b.radius = r;
+  b.mass = m;
+  return b;
+}
+
+// Equal masses, smooth, e: the velocities leave as -e times the approach,
+// shared equally (v1' = -e u, v2' = e u for u and -u).
+TEST(ScaleImpact, HeadOnMatchesTheClosedForm) {
+  SceneDef s = onScalePath();
+  s.contact = {0.6, 0.0};
+  s.balls = {ball({0.0, 0.0}, {2.0, 0.0}), ball({1.0, 0.0}, {-2.0, 0.0})};
+  World w(s);
+  ASSERT_TRUE(w.plan().scale);
+  w.step();
+  EXPECT_NEAR(w.ball(0).velocity.x(), -0.6 * 2.0, 1e-12);
+  EXPECT_NEAR(w.ball(1).velocity.x(), 0.6 * 2.0, 1e-12);
+  EXPECT_EQ(w.ball(0).velocity.y(), 0.0);
+  EXPECT_NEAR(w.ball(0).velocity.x() + w.ball(1).velocity.x(), 0.0, 1e-12);  // momentum
+}
+
+// A disk hits a floor at (1, -2) m/s without spin, mu = 0.1, e = 0.5 (r = 0.5,
+// q = J / (m r^2) = 1/2): sliding, so v_x' = v_x - mu (1 + e) |v_y| = 0.7,
+// v_y' = e |v_y| = 1, w' = -mu (1 + e) |v_y| / (q r) = -1.2 rad/s.
+TEST(ScaleImpact, SlidingFloorHitMatchesTheClosedForm) {
+  SceneDef s = onScalePath();
+  s.contact = {0.5, 0.1};
+  s.walls = boxWalls({-10.0, 0.0}, {10.0, 10.0});
+  s.balls = {ball({0.0, 0.5}, {1.0, -2.0})};
+  World w(s);
+  w.step();
+  EXPECT_NEAR(w.ball(0).velocity.x(), 0.7, 1e-12);
+  EXPECT_NEAR(w.ball(0).velocity.y(), 1.0, 1e-12);
+  EXPECT_NEAR(w.ball(0).angularVelocity, -1.2, 1e-12);
+}
+
+// At rest on a floor under gravity: the floor's impulse is the weight's, m g
+// dt, every step; the ball neither sinks nor hops.
+TEST(ScaleImpact, RestingBallStaysAtRest) {
+  SceneDef s = onScalePath();
+  s.gravity = {0.0, -10.0};
+  s.contact = {0.5, 0.5};
+  s.walls = boxWalls({-10.0, 0.0}, {10.0, 10.0});
+  s.balls = {ball({0.0, 0.5}, {0.0, 0.0}, 0.5, 2.0)};
+  World w(s);
+  w.recordImpacts(true);
+  for (int k = 0; k < 100; ++k) {
+    w.step();
+    ASSERT_EQ(w.impacts().size(), 1u);
+    EXPECT_NEAR(w.impacts()[0].normalImpulse, 2.0 * 10.0 * 1e-3, 1e-15);
+  }
+  EXPECT_NEAR(w.ball(0).velocity.norm(), 0.0, 1e-15);
+  EXPECT_NEAR(w.ball(0).position.y(), 0.5, 1e-12);
+}
+
+}  // namespace
+}  // namespace particles

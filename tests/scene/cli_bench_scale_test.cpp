@@ -1,0 +1,56 @@
+// particles bench --scale through the real binary: bad arguments are exit 2
+// with nothing run; a tiny run prints its table and writes one CSV row per
+// engine run.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "cli_support.h"
+
+namespace particles::test {
+namespace {
+
+void expectBadInput(const std::string& args, const std::string& problem) {
+  const CliResult r = runCli(args);
+  EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
+  EXPECT_EQ(r.out, "") << args;
+  EXPECT_NE(r.err.find(problem), std::string::npos) << args << "\ngot: " << r.err;
+}
+
+TEST(CliBenchScale, BadArgumentsAreExitTwo) {
+  expectBadInput("bench --scale --n 0 --csv ''", "--n");
+  expectBadInput("bench --scale --n ten --csv ''", "--n");
+  expectBadInput("bench --scale --threads 0 --csv ''", "--threads");
+  expectBadInput("bench --scale --steps -1 --csv ''", "--steps");
+  expectBadInput("bench --scale --frob", "frob");
+}
+
+// Without --scale, bench is the catalogue benchmark: an option of the pile's
+// must not silently run that instead, nor the catalogue's run the pile.
+TEST(CliBenchScale, OptionsOfTheOtherBenchmarkAreExitTwo) {
+  expectBadInput("bench --n 10", "--n needs --scale");
+  expectBadInput("bench --threads 2", "--threads needs --scale");
+  expectBadInput("bench --scale --n 10 --full", "--full is an option of the catalogue benchmark");
+}
+
+TEST(CliBenchScale, UnwritableCsvIsExitTwo) {
+  expectBadInput("bench --scale --n 10 --steps 1 --csv /nonexistent-dir/pile.csv", "--csv");
+}
+
+TEST(CliBenchScale, TinyRunWritesTableAndCsv) {
+  TempDir dir;
+  const std::string csv = dir.file("pile.csv").string();
+  const CliResult r =
+      runCli("bench --scale --n 60 --threads 1 2 --steps 4 --csv " + shellQuote(csv));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("engine"), std::string::npos);
+  EXPECT_NE(r.out.find("box2d"), std::string::npos);
+  const std::string text = readFile(csv);
+  EXPECT_TRUE(text.starts_with("engine,n,polydisperse,threads,steps,")) << text;
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 4) << text;  // header, T=1, T=2, box2d
+  EXPECT_NE(text.find("\nengine,60,0,2,4,"), std::string::npos) << text;
+  EXPECT_NE(text.find("\nbox2d,60,0,1,4,"), std::string::npos) << text;
+}
+
+}  // namespace
+}  // namespace particles::test
