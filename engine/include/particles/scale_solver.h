@@ -57,6 +57,10 @@ class ScaleSolver {
     double massT = 0.0;     // kg, 1 / (1/m_a + 1/m_b + r_a^2/J_a + r_b^2/J_b)
     double friction = 0.0;  // mixed mu
     double target = 0.0;    // m/s, the least normal relative velocity allowed
+    // m/s, the normal relative velocity after the restitution pass, for a
+    // speculative row whose bodies close their gap within the step: -e times
+    // the approach they brought. 0: no restitution pass for this row.
+    double bounce = 0.0;
     double lambdaN = 0.0;   // N s, accumulated normal impulse (>= 0)
     double lambdaT = 0.0;   // N s, accumulated tangential impulse
     std::uint64_t key = 0;  // (a, b) for warm starting, in the contact order
