@@ -8,22 +8,13 @@
 #include <stdexcept>
 
 #include "particles/timestep/floor_bounce.h"
+#include "ball_def.h"
 
 namespace particles::timestep {
 namespace {
 
 constexpr double kG = 9.81;  // m/s^2
 
-BallDef ball(Vec2 position, double radius, double mass, Vec2 velocity = Vec2::Zero(),
-             double spin = 0.0) {
-  BallDef b;
-  b.position = position;
-  b.radius = radius;
-  b.mass = mass;
-  b.velocity = velocity;
-  b.angularVelocity = spin;
-  return b;
-}
 
 WallDef wall(Vec2 a, Vec2 b) {
   WallDef w;

@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <numbers>
 
+#include "ball_def.h"
+
 namespace particles::timestep {
 namespace {
 
@@ -21,15 +23,6 @@ std::string num(double x) {
   return buf;
 }
 
-BallDef ball(Vec2 p, double r, double m, Vec2 v = Vec2::Zero(), double w = 0.0) {
-  BallDef b;
-  b.position = p;
-  b.radius = r;
-  b.mass = m;
-  b.velocity = v;
-  b.angularVelocity = w;
-  return b;
-}
 
 // Ball 0 started left of ball 1 on the x axis: ending right of it means it went through.
 bool orderFlipped(std::span<const BallState> b) { return b[0].position.x() > b[1].position.x(); }
