@@ -5,31 +5,13 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
-#include <cstring>
 
 #include "particles/pile/pile_scene.h"
+#include "particles/state_hash.h"
 #include "particles/world.h"
 
 namespace particles::pile {
 namespace {
-
-// FNV-1a 64 over the bits of every ball's x, y, vx, vy, angle, w.
-std::uint64_t stateHash(const World& w) {
-  std::uint64_t h = 0xcbf29ce484222325ULL;
-  for (std::size_t i = 0; i < w.ballCount(); ++i) {
-    const BallState b = w.ball(i);
-    for (double d : {b.position.x(), b.position.y(), b.velocity.x(), b.velocity.y(), b.angle,
-                     b.angularVelocity}) {
-      std::uint64_t bits;
-      std::memcpy(&bits, &d, sizeof bits);
-      for (int k = 0; k < 8; ++k) {
-        h ^= (bits >> (8 * k)) & 0xffu;
-        h *= 0x100000001b3ULL;
-      }
-    }
-  }
-  return h;
-}
 
 std::uint64_t hashAfter(int threads, int steps, bool poly) {
   PileParams p;
