@@ -18,7 +18,9 @@ std::uint64_t hashAfter(int threads, int steps, bool poly) {
   p.count = 2500;
   p.polydisperse = poly;
   p.threads = threads;
-  World world(makePile(p));
+  SceneDef scene = makePile(p);
+  scene.solver.scaleParallelFrom = 0;  // share the step among the threads at this size too
+  World world(scene);
   EXPECT_TRUE(world.plan().scale);
   world.run(steps);
   return stateHash(world);
@@ -37,7 +39,9 @@ TEST(ScaleDeterminism, CopiedWorldContinuesIdentically) {
   PileParams p;
   p.count = 1500;
   p.threads = 2;
-  World original(makePile(p));
+  SceneDef scene = makePile(p);
+  scene.solver.scaleParallelFrom = 0;
+  World original(scene);
   original.run(150);
   World copy = original;  // carries the warm-start impulses, not the threads
   original.run(50);

@@ -77,7 +77,7 @@ class ScaleSolver {
 
  private:
   void findRows(const ScaleBodies& bodies, ThreadPool& pool);
-  void partition(const ScaleBodies& bodies);
+  void partition(const ScaleBodies& bodies, ThreadPool& pool);
 
   // Rows of this step in key order (each thread fills its own range of balls).
   std::vector<std::vector<Row>> found_;
@@ -86,6 +86,7 @@ class ScaleSolver {
   std::vector<int> stripOf_;     // per ball: its vertical strip
   std::vector<Motion> motion_;   // per ball, during the velocity iterations
   std::vector<int> slot_;        // per row in key order: its index in rows_
+  std::vector<int> stripCount_;  // per thread and strip: rows, then where they go
   // The last step's accumulated impulses, by key (sorted).
   std::vector<std::uint64_t> lastKey_;
   std::vector<double> lastN_, lastT_;

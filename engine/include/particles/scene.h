@@ -105,6 +105,11 @@ struct SolverSettings {
   // example scene, every isolated impact) the step is exactly the one of
   // docs/physics.md. Measured on the pile (docs/scale.md).
   int scaleThreshold = 1000;
+  // Ball count from which the large-scene path shares its step among
+  // `threads` (balls). Below it the step is too short for the threads'
+  // barriers to pay: measured on the pile (docs/scale.md), 2 threads took
+  // 2.9x as long as 1 at 1,000 balls. The result does not depend on it.
+  int scaleParallelFrom = 5000;
   // Velocity iterations per step of the large-scene path (count).
   int scaleVelocityIterations = 8;
   // Upper bound on overlap-removal passes of the large-scene path (count);
