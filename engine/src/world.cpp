@@ -85,8 +85,11 @@ void World::reset(const SceneDef& scene) {
   plan_.grid = static_cast<int>(scene.balls.size()) >= scene.solver.gridThreshold;
   // The mutants are the small-scene solver with one sign changed; they never
   // take the large-scene path.
-  plan_.scale = static_cast<int>(scene.balls.size()) >= scene.solver.scaleThreshold &&
-                scene.solver.mutation == Mutation::None;
+  const int scaleFrom =
+      plan_.gravity ? std::min(scene.solver.scaleThreshold, scene.solver.scaleThresholdUnderGravity)
+                    : scene.solver.scaleThreshold;
+  plan_.scale =
+      static_cast<int>(scene.balls.size()) >= scaleFrom && scene.solver.mutation == Mutation::None;
   scaleSolver_.reset();
 }
 
@@ -312,8 +315,8 @@ void World::integratePositions() {
   if (plan_.walls && scene_.solver.sweptWalls) {
     for (std::size_t i = 0; i < n; ++i) {
       const double t = sweptTime_[i];
-      position_[i] += t < 0.0 ? dt_ * velocity_[i]
-                              : Vec2(t * sweptVelocity_[i] + (dt_ - t) * velocity_[i]);
+      position_[i] +=
+          t < 0.0 ? dt_ * velocity_[i] : Vec2(t * sweptVelocity_[i] + (dt_ - t) * velocity_[i]);
     }
   } else {
     for (std::size_t i = 0; i < n; ++i) position_[i] += dt_ * velocity_[i];

@@ -51,13 +51,20 @@ TEST(ScaleDeterminism, CopiedWorldContinuesIdentically) {
 
 TEST(ScaleDeterminism, PathEngagesOnlyFromTheThreshold) {
   PileParams p;
-  p.count = 999;
-  EXPECT_FALSE(World(makePile(p)).plan().scale);
   p.count = 1000;
-  EXPECT_TRUE(World(makePile(p)).plan().scale);
   SceneDef scene = makePile(p);
+  scene.gravity = Vec2::Zero();  // a gas: the large path from scaleThreshold balls
+  scene.balls.resize(999);
+  EXPECT_FALSE(World(scene).plan().scale);
+  scene.balls.resize(1000);
+  EXPECT_TRUE(World(scene).plan().scale);
   scene.solver.mutation = Mutation::NormalImpulseSign;  // mutants stay on the small path
   EXPECT_FALSE(World(scene).plan().scale);
+  // Under gravity (a pile): from scaleThresholdUnderGravity balls.
+  p.count = 31;
+  EXPECT_FALSE(World(makePile(p)).plan().scale);
+  p.count = 32;
+  EXPECT_TRUE(World(makePile(p)).plan().scale);
 }
 
 }  // namespace

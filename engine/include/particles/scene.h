@@ -101,10 +101,18 @@ struct SolverSettings {
   // Ball count from which the large-scene path replaces the three contact
   // stages (docs/scale.md): contacts found once per step with a margin,
   // accumulated impulses warm-started across steps, a fixed number of
-  // Gauss-Seidel iterations in vertical strips shared by `threads`. Below it (every
-  // example scene, every isolated impact) the step is exactly the one of
-  // docs/physics.md. Measured on the pile (docs/scale.md).
+  // Gauss-Seidel iterations in vertical strips shared by `threads`. Below it
+  // (every example scene, every isolated impact) the step is exactly the one
+  // of docs/physics.md. Measured on the pile (docs/scale.md).
   int scaleThreshold = 1000;
+  // The same threshold for scenes with gravity (balls). Under gravity balls
+  // come to rest on each other, and the small-scene step cannot hold a resting
+  // pile still: its passes start from zero impulse every step, so a pile of
+  // 50 or 200 balls jitters forever (docs/stress.md, "Resting contact"). The
+  // large-scene path's warm-started impulses bring the same piles to rest.
+  // Without gravity the small-scene step stays up to scaleThreshold: it
+  // conserves an elastic gas's energy exactly, the large path does not.
+  int scaleThresholdUnderGravity = 32;
   // Ball count from which the large-scene path shares its step among
   // `threads` (balls). Below it the step is too short for the threads'
   // barriers to pay: measured on the pile (docs/scale.md), 2 threads took
