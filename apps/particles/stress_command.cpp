@@ -159,9 +159,11 @@ int stress(const StressOptions& o) {
     std::cerr << "stress: " << c.axis << " " << c.value << "..." << std::endl;
     const long long every = c.scene.balls.size() > 50 ? 100 : 1;
     StressRow r{&c, {}, {}, {}, {}, {}};
+    // The scene the engine ran, switches included: it is also what a broken
+    // case's file records, so `particles run` replays this run.
+    SceneDef scene = c.scene;
+    scene.solver.sweptWalls = o.sweptWalls;
     {
-      SceneDef scene = c.scene;
-      scene.solver.sweptWalls = o.sweptWalls;
       auto s = timestep::engineStepper(scene);
       r.engine = timestep::observeStress(*s, c, every);
     }
@@ -175,7 +177,7 @@ int stress(const StressOptions& o) {
       fs::create_directories(out / "broken");
       const fs::path file = out / "broken" / fileName(c);
       std::ofstream f(file);
-      f << sceneText(c.scene);
+      f << sceneText(scene);
       if (!f) throw std::runtime_error("cannot write " + file.string());
       r.scenePath = file.string();
     }
@@ -229,7 +231,7 @@ findings, not failures); 1 on an I/O error; 2 on bad arguments.)");
   cmd->add_flag("--long", o->longGas, "Run the elastic gas for 1e6 steps instead of 1e4");
   cmd->add_flag("--swept-walls", o->sweptWalls,
                 "Run the engine with continuous collision against walls (SolverSettings::sweptWalls; "
-                "the written scenes do not carry it)");
+                "the written scenes carry it as solver.swept_walls)");
   cmd->callback([o, out, &action] {
     o->outGiven = out->count() > 0;
     action = [o] {

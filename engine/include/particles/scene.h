@@ -89,10 +89,10 @@ struct SolverSettings {
   // with the old velocity up to the time of impact and with the new one
   // after. Off by default: it changes results (every wall bounce then happens
   // at its time of impact instead of up to a step late), so the golden state
-  // hashes and the comparison with Box2D keep the discrete step; scene files
-  // cannot set it. Ball-ball contacts are not swept, and the large-scene
-  // path (scaleThreshold) does not sweep at all: its contact margin is its
-  // guard against tunnelling (docs/scale.md).
+  // hashes and the comparison with Box2D keep the discrete step. Scene files
+  // set it as solver.swept_walls. Ball-ball contacts are not swept, and the
+  // large-scene path (scaleThreshold) does not sweep at all: its contact
+  // margin is its guard against tunnelling (docs/scale.md).
   bool sweptWalls = false;
   // Worker threads of the step (>= 1; docs/scale.md). The result is
   // bit-identical for every count: threads only share work whose order does
