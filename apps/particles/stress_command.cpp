@@ -35,6 +35,7 @@ struct StressOptions {
   std::string report;
   bool longGas = false;
   bool sweptWalls = false;  // the engine with SolverSettings::sweptWalls
+  bool sweptBalls = false;  // the engine with SolverSettings::sweptBalls
 };
 
 struct StressRow {
@@ -98,7 +99,7 @@ void writeCsv(const fs::path& file, const std::vector<StressRow>& rows) {
 }
 
 void writeReport(const fs::path& dir, const std::vector<StressRow>& rows, bool longGas,
-                 bool swept) {
+                 bool sweptWalls, bool sweptBalls) {
   html::Document doc("particles stress: the stability envelope");
   doc.paragraph(
       "Each case runs in the engine and in its Box2D 2.4.1 twin (continuous physics off, as the "
@@ -108,7 +109,10 @@ void writeReport(const fs::path& dir, const std::vector<StressRow>& rows, bool l
       "radius. Broken cases are written as scene files (column \"scene\") that particles run and "
       "particles compare replay. Elastic gas: " +
       std::string(longGas ? "1e6" : "1e4") + " steps." +
-      (swept ? " The engine ran with continuous collision against walls (--swept-walls)." : ""));
+      (sweptWalls ? " The engine ran with continuous collision against walls (--swept-walls)."
+                  : "") +
+      (sweptBalls ? " The engine ran with continuous collision between balls (--swept-balls)."
+                  : ""));
   html::Table t{"Envelope", {"axis", "value", "engine", "Box2D", "overlap at rest (engine / Box2D, / r)", "scene"}, {}, {}};
   for (const StressRow& r : rows) {
     t.rows.push_back({r.c->axis, r.c->value, verdictText(r.engineVerdict),
@@ -163,6 +167,7 @@ int stress(const StressOptions& o) {
     // case's file records, so `particles run` replays this run.
     SceneDef scene = c.scene;
     scene.solver.sweptWalls = o.sweptWalls;
+    scene.solver.sweptBalls = o.sweptBalls;
     {
       auto s = timestep::engineStepper(scene);
       r.engine = timestep::observeStress(*s, c, every);
@@ -185,7 +190,7 @@ int stress(const StressOptions& o) {
   }
   writeCsv(out / "envelope.csv", rows);
   if (separateReport) writeCsv(fs::path(o.report) / "envelope.csv", rows);
-  if (!o.report.empty()) writeReport(o.report, rows, o.longGas, o.sweptWalls);
+  if (!o.report.empty()) writeReport(o.report, rows, o.longGas, o.sweptWalls, o.sweptBalls);
   std::printf("%-14s %-12s %-44s %s\n", "axis", "value", "engine", "Box2D");
   int broken = 0;
   for (const StressRow& r : rows) {
@@ -232,6 +237,9 @@ findings, not failures); 1 on an I/O error; 2 on bad arguments.)");
   cmd->add_flag("--swept-walls", o->sweptWalls,
                 "Run the engine with continuous collision against walls (SolverSettings::sweptWalls; "
                 "the written scenes carry it as solver.swept_walls)");
+  cmd->add_flag("--swept-balls", o->sweptBalls,
+                "Run the engine with continuous collision between balls "
+                "(SolverSettings::sweptBalls; the written scenes carry it as solver.swept_balls)");
   cmd->callback([o, out, &action] {
     o->outGiven = out->count() > 0;
     action = [o] {

@@ -57,7 +57,8 @@ nlohmann::json sceneJson(const SceneDef& s) {
   j["solver"] = {{"contact_passes", s.solver.contactPasses},
                  {"correction_passes", s.solver.correctionPasses},
                  {"grid_threshold", s.solver.gridThreshold},
-                 {"swept_walls", s.solver.sweptWalls}};
+                 {"swept_walls", s.solver.sweptWalls},
+                 {"swept_balls", s.solver.sweptBalls}};
   return j;
 }
 

@@ -341,6 +341,11 @@ TEST_F(Rejection, SweptWallsAsString) {
                  "must be true or false, got string \"true\"");
 }
 
+TEST_F(Rejection, SweptBallsNotBoolean) {
+  expectRejected(withBall(R"("solver": {"swept_balls": null})"), "solver.swept_balls",
+                 "must be true or false, got null");
+}
+
 TEST_F(Rejection, DensityGivesInfiniteMass) {
   expectRejected(R"({"balls": [{"position": [0, 0], "radius": 1e200, "density": 1e200}]})",
                  "balls[0].density", "gives mass = density * pi * r^2 = inf");

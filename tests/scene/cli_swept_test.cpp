@@ -1,6 +1,6 @@
-// Scene files carry the continuous-collision switches (solver.swept_walls),
-// and `particles stress --swept-walls` writes them into its broken scenes, so
-// `particles run` replays what stress ran.
+// Scene files carry the continuous-collision switches (solver.swept_walls,
+// solver.swept_balls), and `particles stress --swept-walls` writes them into
+// its broken scenes, so `particles run` replays what stress ran.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -33,6 +33,27 @@ TEST(CliSwept, SweptWallsFromTheSceneFile) {
   ASSERT_EQ(on.status, 0) << on.err;
   ASSERT_EQ(off.status, 0) << off.err;
   EXPECT_NEAR(finalX(on), -4.5, 1e-9);
+  EXPECT_GT(finalX(off), 2.0);
+}
+
+// Two equal balls closing at 2500 m/s (5 radii per step), e = 1, 3 steps:
+// swept, they meet at t = 0.4 ms and exchange velocities (ball 0 ends at
+// 2000 * 0.4e-3 - 500 * 2.6e-3 = -0.5 m); discrete, they pass through.
+std::string fastBalls(const char* swept) {
+  return std::string(R"({"balls": [
+      {"position": [0, 0], "velocity": [2000, 0], "radius": 0.5, "mass": 1},
+      {"position": [2, 0], "velocity": [-500, 0], "radius": 0.5, "mass": 1}],
+    "dt": 0.001, "duration": 0.003, "solver": {"swept_balls": )") +
+         swept + "}}";
+}
+
+TEST(CliSwept, SweptBallsFromTheSceneFile) {
+  TempDir dir;
+  const CliResult on = runCli("run " + shellQuote(dir.write("on.json", fastBalls("true"))));
+  const CliResult off = runCli("run " + shellQuote(dir.write("off.json", fastBalls("false"))));
+  ASSERT_EQ(on.status, 0) << on.err;
+  ASSERT_EQ(off.status, 0) << off.err;
+  EXPECT_NEAR(finalX(on), -0.5, 1e-9);
   EXPECT_GT(finalX(off), 2.0);
 }
 
