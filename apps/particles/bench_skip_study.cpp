@@ -126,6 +126,20 @@ std::vector<SkipRow> runSkipStudy(int repeats, bool full) {
     rows.push_back({"angular work", "mu = 0 (no tangential or spin work)", n, smooth.first, true});
     rows.push_back({"angular work", "mu = 0.3 (different motion)", n, rough.first, false});
   }
+
+  // 4. Continuous collision between balls (SolverSettings::sweptBalls) off
+  // and on, brute force (16, 32) and grid (64, 256): what the sweep costs a
+  // scene that has it on. Off is the step every other row measures; on, the
+  // impacts happen at their time of impact, so the motion differs.
+  for (int n : {16, 32, 64, 256}) {
+    const int r = std::max(1, 4096 / n);
+    SceneDef swept = gas(n, 0.0);
+    swept.solver.sweptBalls = true;
+    const auto off = time(gas(n, 0.0), repeats, r);
+    const auto on = time(swept, repeats, r);
+    rows.push_back({"swept balls", "off (discrete contacts)", n, off.first, true});
+    rows.push_back({"swept balls", "on (different motion)", n, on.first, false});
+  }
   return rows;
 }
 

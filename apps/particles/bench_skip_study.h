@@ -8,7 +8,7 @@
 namespace particles::cli {
 
 struct SkipRow {
-  std::string study;    // "two-ball stages", "broad phase", "angular work"
+  std::string study;    // "two-ball stages", "broad phase", "angular work", "swept balls"
   std::string variant;  // what this run had switched on
   int balls = 0;
   double nsPerStep = 0.0;  // ns of wall time per step, median of repeats

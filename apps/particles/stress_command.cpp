@@ -31,9 +31,11 @@ using timestep::Verdict;
 
 struct StressOptions {
   std::string out = "stress";
+  bool outGiven = false;  // --out on the command line; without it --report DIR takes everything
   std::string report;
   bool longGas = false;
   bool sweptWalls = false;  // the engine with SolverSettings::sweptWalls
+  bool sweptBalls = false;  // the engine with SolverSettings::sweptBalls
 };
 
 struct StressRow {
@@ -54,6 +56,24 @@ std::string fileName(const StressCase& c) {
   for (char& ch : s)
     if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '.' && ch != '-') ch = '_';
   return s + ".json";
+}
+
+// A relative path as a URL path: bytes outside the unreserved set (and '/')
+// percent-encoded, so a directory name with a space or '#' still links.
+std::string urlPath(const fs::path& p) {
+  static const char* hex = "0123456789ABCDEF";
+  std::string u;
+  for (const char ch : p.generic_string()) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (std::isalnum(c) || c == '-' || c == '.' || c == '_' || c == '~' || c == '/') {
+      u += ch;
+    } else {
+      u += '%';
+      u += hex[c >> 4];
+      u += hex[c & 15];
+    }
+  }
+  return u;
 }
 
 std::string verdictText(const Verdict& v) { return v.stable ? "stable" : "BROKEN (" + v.reasons + ")"; }
@@ -79,7 +99,7 @@ void writeCsv(const fs::path& file, const std::vector<StressRow>& rows) {
 }
 
 void writeReport(const fs::path& dir, const std::vector<StressRow>& rows, bool longGas,
-                 bool swept) {
+                 bool sweptWalls, bool sweptBalls) {
   html::Document doc("particles stress: the stability envelope");
   doc.paragraph(
       "Each case runs in the engine and in its Box2D 2.4.1 twin (continuous physics off, as the "
@@ -89,7 +109,10 @@ void writeReport(const fs::path& dir, const std::vector<StressRow>& rows, bool l
       "radius. Broken cases are written as scene files (column \"scene\") that particles run and "
       "particles compare replay. Elastic gas: " +
       std::string(longGas ? "1e6" : "1e4") + " steps." +
-      (swept ? " The engine ran with continuous collision against walls (--swept-walls)." : ""));
+      (sweptWalls ? " The engine ran with continuous collision against walls (--swept-walls)."
+                  : "") +
+      (sweptBalls ? " The engine ran with continuous collision between balls (--swept-balls)."
+                  : ""));
   html::Table t{"Envelope", {"axis", "value", "engine", "Box2D", "overlap at rest (engine / Box2D, / r)", "scene"}, {}, {}};
   for (const StressRow& r : rows) {
     t.rows.push_back({r.c->axis, r.c->value, verdictText(r.engineVerdict),
@@ -97,6 +120,11 @@ void writeReport(const fs::path& dir, const std::vector<StressRow>& rows, bool l
                       r.engine.atRest ? sci(r.engine.overlapAtRest) + " / " + sci(r.box2d.overlapAtRest) : "",
                       r.scenePath});
     t.rowClass.push_back(r.engineVerdict.stable && r.box2dVerdict.stable ? "good" : "bad");
+    // The link is relative to index.html (the scene file exists by now), so
+    // the report opens from anywhere and survives being moved with its scenes.
+    t.links.push_back({});
+    if (!r.scenePath.empty())
+      t.links.back() = {"", "", "", "", "", urlPath(fs::relative(r.scenePath, dir))};
   }
   doc.table(t);
   // One plot per engine: energy growth along the case list, log scale.
@@ -122,18 +150,25 @@ void writeReport(const fs::path& dir, const std::vector<StressRow>& rows, bool l
 }
 
 int stress(const StressOptions& o) {
-  const fs::path out = o.out;
+  // One directory for everything when only --report is given: the report's
+  // links then point at scenes beside it.
+  const fs::path out = o.report.empty() || o.outGiven ? fs::path(o.out) : fs::path(o.report);
+  const bool separateReport =
+      !o.report.empty() && fs::weakly_canonical(out) != fs::weakly_canonical(o.report);
   if (!prepareReportDir(out)) return kExitBadInput;
-  if (!o.report.empty() && !prepareReportDir(o.report)) return kExitBadInput;
+  if (separateReport && !prepareReportDir(o.report)) return kExitBadInput;
   const std::vector<StressCase> cases = timestep::stressCases(o.longGas);
   std::vector<StressRow> rows;
   for (const StressCase& c : cases) {
     std::cerr << "stress: " << c.axis << " " << c.value << "..." << std::endl;
     const long long every = c.scene.balls.size() > 50 ? 100 : 1;
     StressRow r{&c, {}, {}, {}, {}, {}};
+    // The scene the engine ran, switches included: it is also what a broken
+    // case's file records, so `particles run` replays this run.
+    SceneDef scene = c.scene;
+    scene.solver.sweptWalls = o.sweptWalls;
+    scene.solver.sweptBalls = o.sweptBalls;
     {
-      SceneDef scene = c.scene;
-      scene.solver.sweptWalls = o.sweptWalls;
       auto s = timestep::engineStepper(scene);
       r.engine = timestep::observeStress(*s, c, every);
     }
@@ -147,17 +182,15 @@ int stress(const StressOptions& o) {
       fs::create_directories(out / "broken");
       const fs::path file = out / "broken" / fileName(c);
       std::ofstream f(file);
-      f << sceneText(c.scene);
+      f << sceneText(scene);
       if (!f) throw std::runtime_error("cannot write " + file.string());
       r.scenePath = file.string();
     }
     rows.push_back(r);
   }
   writeCsv(out / "envelope.csv", rows);
-  if (!o.report.empty()) {
-    writeCsv(fs::path(o.report) / "envelope.csv", rows);
-    writeReport(o.report, rows, o.longGas, o.sweptWalls);
-  }
+  if (separateReport) writeCsv(fs::path(o.report) / "envelope.csv", rows);
+  if (!o.report.empty()) writeReport(o.report, rows, o.longGas, o.sweptWalls, o.sweptBalls);
   std::printf("%-14s %-12s %-44s %s\n", "axis", "value", "engine", "Box2D");
   int broken = 0;
   for (const StressRow& r : rows) {
@@ -187,19 +220,28 @@ void addStressCommand(CLI::App& app, CommandAction& action) {
 infinity, energy growth <= 1 % of the case's energy scale, no tunnelling,
 overlap at rest < 1 % of the radius (docs/stress.md).
 Writes OUT/envelope.csv and OUT/broken/*.json (replay with 'particles run' or
-'particles compare'). Exit status: 0 when the map was made (broken cases are
+'particles compare'); with --report DIR and no --out, all of it goes to DIR
+beside index.html, whose scene links are relative to it. Exit status: 0 when the map was made (broken cases are
 findings, not failures); 1 on an I/O error; 2 on bad arguments.)");
   auto o = std::make_shared<StressOptions>();
-  cmd->add_option("--out", o->out, "Directory for envelope.csv and broken/*.json, created if missing")
-      ->type_name("DIR")
-      ->default_val(o->out);
-  cmd->add_option("--report", o->report, "Also write DIR/index.html (envelope table and plot)")
+  CLI::Option* out =
+      cmd->add_option("--out", o->out,
+                      "Directory for envelope.csv and broken/*.json, created if missing "
+                      "(default: the --report DIR if given, else stress)")
+          ->type_name("DIR");
+  cmd->add_option("--report", o->report,
+                  "Also write DIR/index.html (envelope table and plot); without --out, the CSV "
+                  "and the broken scenes go to DIR too")
       ->type_name("DIR");
   cmd->add_flag("--long", o->longGas, "Run the elastic gas for 1e6 steps instead of 1e4");
   cmd->add_flag("--swept-walls", o->sweptWalls,
                 "Run the engine with continuous collision against walls (SolverSettings::sweptWalls; "
-                "the written scenes do not carry it)");
-  cmd->callback([o, &action] {
+                "the written scenes carry it as solver.swept_walls)");
+  cmd->add_flag("--swept-balls", o->sweptBalls,
+                "Run the engine with continuous collision between balls "
+                "(SolverSettings::sweptBalls; the written scenes carry it as solver.swept_balls)");
+  cmd->callback([o, out, &action] {
+    o->outGiven = out->count() > 0;
     action = [o] {
       try {
         return stress(*o);

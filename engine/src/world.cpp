@@ -90,6 +90,7 @@ void World::reset(const SceneDef& scene) {
                     : scene.solver.scaleThreshold;
   plan_.scale =
       static_cast<int>(scene.balls.size()) >= scaleFrom && scene.solver.mutation == Mutation::None;
+  plan_.sweep = (plan_.walls && scene.solver.sweptWalls) || scene.solver.sweptBalls;
   scaleSolver_.reset();
 }
 
@@ -111,7 +112,8 @@ std::size_t World::memoryBytes() const {
          heapBytes(radius_) + heapBytes(invMass_) + heapBytes(invInertia_) + heapBytes(material_) +
          heapBytes(wallMaterial_) + heapBytes(forcedVelocity_) + heapBytes(pairs_) +
          heapBytes(wallHits_) + broadPhase_.memoryBytes() + heapBytes(impacts_) +
-         scaleSolver_.memoryBytes();
+         scaleSolver_.memoryBytes() + heapBytes(sweptTime_) + heapBytes(sweptVelocity_) +
+         sweptPairFinder_.memoryBytes() + heapBytes(sweptPairs_);
 }
 
 void World::setPullTarget(std::size_t force, const Vec2& target) {
@@ -187,7 +189,11 @@ void World::resolveContacts() {
   findBallContacts(pairs_);
   wallHits_.clear();
   if (plan_.walls) findWallHits(position_, radius_, scene_.walls, wallHits_);
-  if (plan_.walls && scene_.solver.sweptWalls) addSweptWallHits();
+  if (plan_.sweep) {
+    beginSweep();
+    if (plan_.walls && scene_.solver.sweptWalls) addSweptWallHits();
+    if (scene_.solver.sweptBalls) addSweptBallPairs();
+  }
   stats_.contacts = static_cast<int>(pairs_.size() + wallHits_.size());
   stats_.passes = 0;
   impacts_.clear();
@@ -275,6 +281,12 @@ void World::resolveContactsAs() {
     std::erase_if(impacts_, [](const ImpactEvent& e) { return e.normalImpulse == 0.0; });
 }
 
+// No ball has a time of impact yet this step (sweptWalls, sweptBalls).
+void World::beginSweep() {
+  sweptTime_.assign(position_.size(), -1.0);
+  sweptVelocity_.resize(position_.size());
+}
+
 // SolverSettings::sweptWalls: each ball apart from a wall whose path this
 // step reaches it gets that wall as a contact now (the earliest such wall
 // only), so the impulse acts this step; integratePositions() then moves it
@@ -282,8 +294,6 @@ void World::resolveContactsAs() {
 // ball, then wall, as the contact order requires.
 void World::addSweptWallHits() {
   const std::size_t n = position_.size();
-  sweptTime_.assign(n, -1.0);
-  sweptVelocity_.resize(n);
   std::vector<WallHit> merged;
   std::size_t next = 0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -310,9 +320,26 @@ void World::addSweptWallHits() {
   wallHits_.swap(merged);
 }
 
+// SolverSettings::sweptBalls: the swept pairs follow the touching ones in
+// pairs_, in order of their time of impact, so each pass meets a fast
+// ball's first impact before those behind it (which, once it has bounced,
+// are no longer approaching). A ball's time of impact is its earliest, over
+// walls and balls.
+void World::addSweptBallPairs() {
+  sweptPairFinder_.find(position_, velocity_, radius_, dt_, plan_.grid, sweptPairs_);
+  for (const SweptPair& p : sweptPairs_) {
+    pairs_.push_back({p.a, p.b, p.normal, 0.0});
+    for (const int i : {p.a, p.b}) {
+      double& t = sweptTime_[static_cast<std::size_t>(i)];
+      if (t < 0.0 || p.time < t) t = p.time;
+      sweptVelocity_[static_cast<std::size_t>(i)] = velocity_[static_cast<std::size_t>(i)];
+    }
+  }
+}
+
 void World::integratePositions() {
   const std::size_t n = position_.size();
-  if (plan_.walls && scene_.solver.sweptWalls) {
+  if (plan_.sweep) {
     for (std::size_t i = 0; i < n; ++i) {
       const double t = sweptTime_[i];
       position_[i] +=

@@ -44,7 +44,13 @@ void Document::table(const Table& t) {
   for (std::size_t i = 0; i < t.rows.size(); ++i) {
     const std::string cls = i < t.rowClass.size() ? t.rowClass[i] : "";
     body_ += cls.empty() ? "<tr>" : "<tr class=\"" + escape(cls) + "\">";
-    for (const std::string& c : t.rows[i]) body_ += "<td>" + escape(c) + "</td>";
+    for (std::size_t k = 0; k < t.rows[i].size(); ++k) {
+      const std::string& c = t.rows[i][k];
+      const std::string href =
+          i < t.links.size() && k < t.links[i].size() ? t.links[i][k] : std::string();
+      body_ += href.empty() ? "<td>" + escape(c) + "</td>"
+                            : "<td><a href=\"" + escape(href) + "\">" + escape(c) + "</a></td>";
+    }
     body_ += "</tr>\n";
   }
   body_ += "</table>\n";

@@ -56,6 +56,11 @@ std::string readString(const Node& node) {
   return node.value().get<std::string>();
 }
 
+bool readBool(const Node& node) {
+  if (!node.value().is_boolean()) node.fail("must be true or false, got " + describe(node.value()));
+  return node.value().get<bool>();
+}
+
 long long readInteger(const Node& node, long long lo, long long hi) {
   const nlohmann::json& v = node.value();
   std::string range = "[";  // built up piecewise: GCC 12 -Wrestrict misfires on "[" + string

@@ -8,8 +8,8 @@ namespace particles::scenefile {
 namespace {
 
 constexpr std::array<std::string_view, 2> kContactKeys{"restitution", "friction"};
-constexpr std::array<std::string_view, 3> kSolverKeys{"contact_passes", "correction_passes",
-                                                      "grid_threshold"};
+constexpr std::array<std::string_view, 5> kSolverKeys{
+    "contact_passes", "correction_passes", "grid_threshold", "swept_walls", "swept_balls"};
 
 // Upper bound on both pass counts. A resting stack can use every pass of every
 // step (docs/fuzzing.md, finding 1), so an unbounded count let a three-ball
@@ -36,6 +36,8 @@ SolverSettings readSolver(const Node& node) {
     solver.correctionPasses = static_cast<int>(readInteger(*n, 1, kMaxPasses));
   if (auto n = node.optional("grid_threshold"))
     solver.gridThreshold = static_cast<int>(readInteger(*n, 0, INT_MAX));
+  if (auto b = node.optional("swept_walls")) solver.sweptWalls = readBool(*b);
+  if (auto b = node.optional("swept_balls")) solver.sweptBalls = readBool(*b);
   return solver;
 }
 

@@ -56,7 +56,9 @@ nlohmann::json sceneJson(const SceneDef& s) {
   j["duration"] = s.duration;
   j["solver"] = {{"contact_passes", s.solver.contactPasses},
                  {"correction_passes", s.solver.correctionPasses},
-                 {"grid_threshold", s.solver.gridThreshold}};
+                 {"grid_threshold", s.solver.gridThreshold},
+                 {"swept_walls", s.solver.sweptWalls},
+                 {"swept_balls", s.solver.sweptBalls}};
   return j;
 }
 

@@ -24,6 +24,20 @@ TEST(HtmlDocument, EscapesText) {
   EXPECT_EQ(h.find("<td>"), h.find("<td>&lt;td&gt;</td>"));  // the only cell, escaped
 }
 
+// A linked cell is <a href> with its target escaped as an attribute; the
+// others stay plain text.
+TEST(HtmlDocument, LinksCellsThatHaveATarget) {
+  Document d("links");
+  Table t{"", {"name", "file"}, {{"a", "x.json"}, {"b", ""}}, {}, {{"", "dir/x.json?a=\"1\""}}};
+  d.table(t);
+  const std::string h = d.html();
+  EXPECT_NE(h.find("<td>a</td><td><a href=\"dir/x.json?a=&quot;1&quot;\">x.json</a></td>"),
+            std::string::npos)
+      << h;
+  EXPECT_NE(h.find("<td>b</td><td></td>"), std::string::npos) << h;
+  EXPECT_EQ(h.find("<a "), h.rfind("<a "));  // one link only
+}
+
 Plot twoPointPlot() {
   Plot p;
   p.title = "slide_roll: t";

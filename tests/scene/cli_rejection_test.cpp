@@ -331,6 +331,21 @@ TEST_F(Rejection, GridThresholdNegative) {
                  "must be an integer in [0, 2147483647], got -1");
 }
 
+TEST_F(Rejection, SweptWallsNotBoolean) {
+  expectRejected(withBall(R"("solver": {"swept_walls": 1})"), "solver.swept_walls",
+                 "must be true or false, got 1");
+}
+
+TEST_F(Rejection, SweptWallsAsString) {
+  expectRejected(withBall(R"("solver": {"swept_walls": "true"})"), "solver.swept_walls",
+                 "must be true or false, got string \"true\"");
+}
+
+TEST_F(Rejection, SweptBallsNotBoolean) {
+  expectRejected(withBall(R"("solver": {"swept_balls": null})"), "solver.swept_balls",
+                 "must be true or false, got null");
+}
+
 TEST_F(Rejection, DensityGivesInfiniteMass) {
   expectRejected(R"({"balls": [{"position": [0, 0], "radius": 1e200, "density": 1e200}]})",
                  "balls[0].density", "gives mass = density * pi * r^2 = inf");

@@ -61,7 +61,8 @@ TEST(Loader, EveryTopLevelKeyRead) {
                "radius": 0.5, "mass": 2}],
     "forces": [{"type": "pull", "ball": 0, "target": [3, 2], "stiffness": 10}],
     "dt": 0.002, "duration": 0.5,
-    "solver": {"contact_passes": 7, "correction_passes": 3, "grid_threshold": 0}})");
+    "solver": {"contact_passes": 7, "correction_passes": 3, "grid_threshold": 0,
+               "swept_walls": true, "swept_balls": true}})");
   EXPECT_EQ(s.name, "all");
   EXPECT_EQ(s.gravity, Vec2(0.5, -9.81));
   EXPECT_EQ(s.contact.restitution, 0.25);
@@ -78,6 +79,8 @@ TEST(Loader, EveryTopLevelKeyRead) {
   EXPECT_EQ(s.solver.contactPasses, 7);
   EXPECT_EQ(s.solver.correctionPasses, 3);
   EXPECT_EQ(s.solver.gridThreshold, 0);
+  EXPECT_TRUE(s.solver.sweptWalls);
+  EXPECT_TRUE(s.solver.sweptBalls);
 }
 
 TEST(Loader, DensityGivesMass) {

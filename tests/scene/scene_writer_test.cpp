@@ -44,6 +44,8 @@ TEST(SceneWriter, RoundTripsEveryField) {
   s.solver.contactPasses = 7;
   s.solver.correctionPasses = 3;
   s.solver.gridThreshold = 0;
+  s.solver.sweptWalls = true;  // not the defaults: the writer must carry them
+  s.solver.sweptBalls = true;
 
   const SceneDef r = parseScene(sceneText(s), "written.json");
   EXPECT_EQ(r.name, s.name);
@@ -84,6 +86,8 @@ TEST(SceneWriter, RoundTripsEveryField) {
   EXPECT_EQ(r.solver.contactPasses, 7);
   EXPECT_EQ(r.solver.correctionPasses, 3);
   EXPECT_EQ(r.solver.gridThreshold, 0);
+  EXPECT_TRUE(r.solver.sweptWalls);
+  EXPECT_TRUE(r.solver.sweptBalls);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include "particles/broad_phase.h"
 #include "particles/scale_solver.h"
 #include "particles/scene.h"
+#include "particles/swept_ball.h"
 
 namespace particles {
 
@@ -26,7 +27,9 @@ struct ImpactEvent {
   int a = 0;  // ball index
   int b = 0;  // ball index, or wall index when `wall`
   bool wall = false;
-  Vec2 normal{1.0, 0.0};        // unit, from a to b, at the start of the step
+  // unit, from a to b, at the start of the step (at the time of impact for a
+  // swept contact: SolverSettings::sweptWalls, sweptBalls)
+  Vec2 normal{1.0, 0.0};
   double normalImpulse = 0.0;   // N s, sum of lambdaN (>= 0)
   double tangentImpulse = 0.0;  // N s, sum of lambdaT
   double frictionBound = 0.0;   // N s, sum of mu lambdaN (inf for no-slip)
@@ -53,6 +56,9 @@ struct StagePlan {
   bool spin = false;        // anything can rotate: otherwise angles are not integrated
   bool grid = false;        // uniform grid instead of brute-force pairs
   bool scale = false;       // the large-scene path (SolverSettings::scaleThreshold)
+  // continuous collision (sweptWalls with walls, or sweptBalls): per-ball
+  // times of impact this step
+  bool sweep = false;
 };
 
 class World {
@@ -97,7 +103,9 @@ class World {
   void scaleStep();
 
   void findBallContacts(std::vector<BallPair>& out);
+  void beginSweep();
   void addSweptWallHits();
+  void addSweptBallPairs();
 
   SceneDef scene_;
   StagePlan plan_;
@@ -112,8 +120,9 @@ class World {
   std::vector<ContactMaterial> material_;  // per ball, overrides applied
   std::vector<ContactMaterial> wallMaterial_;
   std::vector<Vec2> forcedVelocity_;  // what this step's forces added to each velocity
-  // SolverSettings::sweptWalls: per ball, the time of impact this step (s, <
-  // 0 for none) and the velocity it moved with until then.
+  // SolverSettings::sweptWalls and sweptBalls: per ball, its earliest time
+  // of impact this step (s, < 0 for none) and the velocity it moved with
+  // until then.
   std::vector<double> sweptTime_;
   std::vector<Vec2> sweptVelocity_;
 
@@ -121,6 +130,8 @@ class World {
   std::vector<BallPair> pairs_;
   std::vector<WallHit> wallHits_;
   BroadPhase broadPhase_;
+  SweptPairFinder sweptPairFinder_;  // SolverSettings::sweptBalls
+  std::vector<SweptPair> sweptPairs_;
   ScaleSolver scaleSolver_;  // the large-scene path's contacts and warm-start impulses
 
   bool recordImpacts_ = false;

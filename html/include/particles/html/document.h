@@ -21,6 +21,10 @@ struct Table {
   std::vector<std::vector<std::string>> rows;  // cells as text (escaped when written)
   // Optional per-row CSS class ("good", "bad", "mark"), same length as rows or empty.
   std::vector<std::string> rowClass;
+  // Optional per-cell link targets, shaped like rows (shorter rows or empty
+  // entries: no link). A non-empty entry makes that cell <a href="...">;
+  // the caller gives it relative to the document so the report can be moved.
+  std::vector<std::vector<std::string>> links = {};
 };
 
 struct Series {
