@@ -346,10 +346,7 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
 // found the rows of the t-th range of balls.
 void ScaleSolver::partition(const ScaleBodies& s, ThreadPool& pool) {
   const std::size_t n = s.position.size();
-  // A multiple of 4 strips when there are 4 or more: then 2 (or 4) threads
-  // get the same number of strips of each parity.
-  int strips = std::clamp(gridCols_ / kStripColumns, 1, kMaxStrips);
-  if (strips >= 4) strips -= strips % 4;
+  const int strips = std::clamp(gridCols_ / kStripColumns, 1, kMaxStrips);
   const int threads = pool.size();
   const std::size_t width = static_cast<std::size_t>(strips) + 1;
   stripOf_.resize(n);
