@@ -14,7 +14,9 @@ std::optional<double> sweepPoint(const Vec2& x, const Vec2& v, double r, const V
   const double disc = b * b - a * c;
   if (disc < 0.0) return std::nullopt;
   const double t = c / (-b + std::sqrt(disc));  // the smaller root, without cancellation
-  if (t > dt) return std::nullopt;
+  // Written so that a NaN (products that overflowed: inf - inf) is no hit
+  // rather than a hit at time NaN.
+  if (!(t <= dt)) return std::nullopt;
   return t;
 }
 

@@ -80,5 +80,20 @@ TEST(SweptWalls, ASlowBallBouncesAtTheExactTime) {
   EXPECT_GT(std::fabs(run(false) - exact), 1e-4);
 }
 
+// Products that overflow (|v|^2 = inf, so the discriminant is inf - inf) must
+// give no hit rather than a hit at time NaN, which would then move the ball
+// by NaN.
+TEST(SweptWalls, OverflowingProductsGiveNoNaNTime) {
+  WallDef point;
+  point.a = {1, 1};
+  point.b = {1, 1};
+  const auto hit = sweepAgainstWall({0, 0}, {1e200, 1e200}, 0.5, point, 1e-3);
+  if (hit) {
+    EXPECT_TRUE(std::isfinite(hit->time));
+    EXPECT_GE(hit->time, 0.0);
+    EXPECT_LE(hit->time, 1e-3);
+  }
+}
+
 }  // namespace
 }  // namespace particles
