@@ -6,8 +6,7 @@ namespace particles {
 namespace {
 
 // Earliest t in [0, dt] with |x + v t - e| = r, for x outside that circle.
-std::optional<double> sweepPoint(const Vec2& x, const Vec2& v, double r, const Vec2& e,
-                                 double dt) {
+std::optional<double> sweepPoint(const Vec2& x, const Vec2& v, double r, const Vec2& e, double dt) {
   const Vec2 d = x - e;
   const double a = v.squaredNorm(), b = d.dot(v), c = d.squaredNorm() - r * r;
   if (c <= 0.0 || b >= 0.0 || a == 0.0) return std::nullopt;  // inside, or moving away
