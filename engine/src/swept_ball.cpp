@@ -5,21 +5,14 @@
 
 namespace particles {
 
-// |d + w t| = R with d = xb - xa, w = vb - va, R = ra + rb: the smaller root
-// of (w.w) t^2 + 2 (d.w) t + (d.d - R^2) = 0.
+// Ball b relative to ball a: d = xb - xa, w = vb - va, reach ra + rb.
 std::optional<SweptHit> sweepBalls(const Vec2& xa, const Vec2& va, double ra, const Vec2& xb,
                                    const Vec2& vb, double rb, double dt) {
   const Vec2 d = xb - xa, w = vb - va;
-  const double reach = ra + rb;
-  const double a = w.squaredNorm(), b = d.dot(w), c = d.squaredNorm() - reach * reach;
-  if (!(c > 0.0) || !(b < 0.0) || a == 0.0) return std::nullopt;  // touching, or not approaching
-  const double disc = b * b - a * c;
-  if (!(disc >= 0.0)) return std::nullopt;      // the closest approach stays beyond reach
-  const double t = c / (-b + std::sqrt(disc));  // the smaller root, without cancellation
-  // Also false for a NaN from overflowing products: no finite time of impact.
-  if (!(t <= dt)) return std::nullopt;
-  const Vec2 at = d + t * w;
-  return SweptHit{t, at.normalized()};
+  const auto t = timeOfImpact(d, w, ra + rb, dt);
+  if (!t) return std::nullopt;
+  const Vec2 at = d + *t * w;
+  return SweptHit{*t, at.normalized()};
 }
 
 void SweptPairFinder::consider(std::span<const Vec2> position, std::span<const Vec2> velocity,

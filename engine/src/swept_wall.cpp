@@ -3,23 +3,18 @@
 #include <cmath>
 
 namespace particles {
-namespace {
 
-// Earliest t in [0, dt] with |x + v t - e| = r, for x outside that circle.
-std::optional<double> sweepPoint(const Vec2& x, const Vec2& v, double r, const Vec2& e, double dt) {
-  const Vec2 d = x - e;
-  const double a = v.squaredNorm(), b = d.dot(v), c = d.squaredNorm() - r * r;
-  if (c <= 0.0 || b >= 0.0 || a == 0.0) return std::nullopt;  // inside, or moving away
+// The smaller root of (w.w) t^2 + 2 (d.w) t + (d.d - reach^2) = 0. Every test
+// is written so that a NaN fails it.
+std::optional<double> timeOfImpact(const Vec2& d, const Vec2& w, double reach, double dt) {
+  const double a = w.squaredNorm(), b = d.dot(w), c = d.squaredNorm() - reach * reach;
+  if (!(c > 0.0) || !(b < 0.0) || a == 0.0) return std::nullopt;  // touching, or not closing
   const double disc = b * b - a * c;
-  if (disc < 0.0) return std::nullopt;
+  if (!(disc >= 0.0)) return std::nullopt;      // the closest approach stays beyond reach
   const double t = c / (-b + std::sqrt(disc));  // the smaller root, without cancellation
-  // Written so that a NaN (products that overflowed: inf - inf) is no hit
-  // rather than a hit at time NaN.
   if (!(t <= dt)) return std::nullopt;
   return t;
 }
-
-}  // namespace
 
 std::optional<SweptHit> sweepAgainstWall(const Vec2& x, const Vec2& v, double r,
                                          const WallDef& wall, double dt) {
@@ -39,7 +34,7 @@ std::optional<SweptHit> sweepAgainstWall(const Vec2& x, const Vec2& v, double r,
   }
   // The round ends (the only shape of a point wall).
   for (const Vec2& e : {wall.a, wall.b}) {
-    const auto t = sweepPoint(x, v, r, e, dt);
+    const auto t = timeOfImpact(x - e, v, r, dt);
     if (t && (!best || *t < best->time)) best = SweptHit{*t, (e - (x + *t * v)).normalized()};
   }
   return best;
