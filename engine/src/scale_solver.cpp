@@ -428,16 +428,37 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
   // Runs f on every row: the even strips shared among the threads, then
   // the odd ones (strips of one parity share no ball).
   const int strips = static_cast<int>(stripStart_.size()) - 1;
+  // A thread takes its strips of one parity row by row in turn (strip 0's
+  // first row, strip 2's first row, ..., strip 0's second row, ...): the
+  // strips share no ball, so the result is bit for bit that of solving them
+  // one after another, but consecutive rows no longer wait for each other.
+  // Within a strip each row waits for the last one that touched its balls
+  // (key order puts a ball's rows side by side), so one strip at a time
+  // leaves the core idle on that chain of loads and stores.
   auto byStrip = [&](int t, auto&& f) {
     for (int parity = 0; parity < 2; ++parity) {
-      int index = 0;
+      std::array<std::size_t, kMaxStrips> at{}, end{};
+      int active = 0, index = 0;
       for (int st = parity; st < strips; st += 2, ++index) {
         if (index % threads != t) continue;
-        const std::size_t begin =
-            static_cast<std::size_t>(stripStart_[static_cast<std::size_t>(st)]);
-        const std::size_t end =
-            static_cast<std::size_t>(stripStart_[static_cast<std::size_t>(st) + 1]);
-        for (std::size_t k = begin; k < end; ++k) f(rows_[k]);
+        const std::size_t i = static_cast<std::size_t>(st);
+        at[static_cast<std::size_t>(active)] = static_cast<std::size_t>(stripStart_[i]);
+        end[static_cast<std::size_t>(active)] = static_cast<std::size_t>(stripStart_[i + 1]);
+        if (at[static_cast<std::size_t>(active)] < end[static_cast<std::size_t>(active)]) ++active;
+      }
+      while (active > 0) {
+        for (int j = 0; j < active;) {
+          const std::size_t u = static_cast<std::size_t>(j);
+          f(rows_[at[u]++]);
+          if (at[u] == end[u]) {
+            // This strip is done: the last active one takes its place.
+            --active;
+            at[u] = at[static_cast<std::size_t>(active)];
+            end[u] = end[static_cast<std::size_t>(active)];
+          } else {
+            ++j;
+          }
+        }
       }
       pool.sync();
     }
