@@ -16,11 +16,11 @@
 namespace particles::cli {
 namespace {
 
-constexpr std::array<std::string_view, 8> kScaleOnly{
-    "--n", "--threads", "--poly", "--steps", "--no-box2d", "--iterations", "--position-passes",
-    "--seed"};
-constexpr std::array<std::string_view, 6> kTimestepOnly{"--repeats", "--full",          "--scene",
-                                                        "--skip-csv", "--no-skip-study", "--report"};
+constexpr std::array<std::string_view, 9> kScaleOnly{
+    "--n",          "--threads",         "--poly",  "--steps", "--no-box2d",
+    "--iterations", "--position-passes", "--shock", "--seed"};
+constexpr std::array<std::string_view, 6> kTimestepOnly{
+    "--repeats", "--full", "--scene", "--skip-csv", "--no-skip-study", "--report"};
 
 // The first option of `names` given on the command line, or "".
 template <std::size_t N>
@@ -43,8 +43,8 @@ void addBenchCommand(CLI::App& app, CommandAction& action) {
   addScaleBenchOptions(*cmd, *scale);
   cmd->callback([cmd, timestep, scale, &action] {
     const bool csvGiven = cmd->get_option("--csv")->count() > 0;
-    const std::string misplaced = scale->scale ? givenOption(*cmd, kTimestepOnly)
-                                               : givenOption(*cmd, kScaleOnly);
+    const std::string misplaced =
+        scale->scale ? givenOption(*cmd, kTimestepOnly) : givenOption(*cmd, kScaleOnly);
     action = [timestep, scale, csvGiven, misplaced] {
       if (!misplaced.empty()) {
         printError("bench: " + misplaced +

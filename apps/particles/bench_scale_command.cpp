@@ -189,6 +189,12 @@ void addScaleBenchOptions(CLI::App& bench, ScaleBenchOptions& o) {
                   "SolverSettings::scalePositionPasses, 4)")
       ->type_name("P")
       ->check(integerInRange(1, 10000));
+  bench
+      .add_option("--shock", o.shock,
+                  "Engine shock propagation in the overlap removal, 0..1 (default: "
+                  "SolverSettings::scaleShockPropagation, 0: share by inverse mass)")
+      ->type_name("K")
+      ->check(finiteInRange(0.0, 1.0));
   bench.add_option("--seed", o.seed, "Seed of the grid's jitter and radii (default 20261201)")
       ->type_name("SEED")
       ->check(unsigned64());
@@ -226,6 +232,7 @@ int runScaleBench(const ScaleBenchOptions& o) {
       SceneDef scene = pile::makePile(params);
       if (o.iterations > 0) scene.solver.scaleVelocityIterations = o.iterations;
       if (o.positionPasses > 0) scene.solver.scalePositionPasses = o.positionPasses;
+      if (o.shock >= 0.0) scene.solver.scaleShockPropagation = o.shock;
       World world(scene);
       RunFigures f = measure(world, scene, o.steps);
       f.engine = "engine";

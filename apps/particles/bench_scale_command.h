@@ -24,6 +24,7 @@ struct ScaleBenchOptions {
   std::uint64_t seed = 20261201;         // --seed: the grid's jitter and radii
   int iterations = 0;      // --iterations: SolverSettings::scaleVelocityIterations (0 = default)
   int positionPasses = 0;  // --position-passes: SolverSettings::scalePositionPasses (0 = default)
+  double shock = -1.0;  // --shock: SolverSettings::scaleShockPropagation (< 0 = default)
 };
 
 // Registers the options above on the `bench` subcommand.

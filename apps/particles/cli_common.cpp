@@ -2,8 +2,10 @@
 
 #include <CLI/CLI.hpp>
 #include <charconv>
+#include <cmath>
 #include <cstdint>
 #include <iostream>
+#include <sstream>
 
 namespace particles::cli {
 
@@ -37,6 +39,21 @@ CLI::Validator unsigned64() {
         const auto [ptr, ec] = std::from_chars(text.data(), end, value);
         if (ec != std::errc() || ptr != end)
           return "must be an integer >= 0 and < 2^64, got " + text;
+        return "";
+      },
+      "");
+}
+
+CLI::Validator finiteInRange(double min, double max) {
+  std::ostringstream want;
+  want << "must be a number >= " << min << " and <= " << max << ", got ";
+  return CLI::Validator(
+      [min, max, want = want.str()](std::string& text) -> std::string {
+        double value = 0.0;
+        const char* end = text.data() + text.size();
+        const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+        if (ec != std::errc() || ptr != end || !std::isfinite(value) || value < min || value > max)
+          return want + text;
         return "";
       },
       "");

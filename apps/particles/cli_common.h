@@ -24,6 +24,9 @@ void printWarning(const std::string& message);
 CLI::Validator integerInRange(long long min, long long max);
 // A decimal unsigned 64-bit integer (no sign, no wrap-around).
 CLI::Validator unsigned64();
+// A finite number in [min, max] (NaN and infinities are refused, which
+// CLI::Range lets through: every comparison with NaN is false).
+CLI::Validator finiteInRange(double min, double max);
 
 // Box2D's per-step solver iterations (Box2DSettings), with the defaults
 // Box2D recommends.

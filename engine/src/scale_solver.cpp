@@ -136,9 +136,11 @@ inline void restituteRow(ScaleSolver::Motion* m, ScaleSolver::Row& r) {
 }
 
 // Moves a row's bodies apart by their whole overlap, shared by inverse mass
-// (a wall takes none): the small-scene projection of world.cpp, per row.
+// (a wall takes none): the small-scene projection of world.cpp, per row,
+// except that under gravity the lower ball's share is scaled by
+// 1 - shock |n . down| (SolverSettings::scaleShockPropagation).
 // Returns the overlap found (m, <= 0 when apart).
-inline double projectRow(const ScaleBodies& s, const ScaleSolver::Row& r) {
+inline double projectRow(const ScaleBodies& s, const ScaleSolver::Row& r, double shock) {
   const int a = r.a;
   if (r.b < 0) {
     WallHit hit;
@@ -154,9 +156,20 @@ inline double projectRow(const ScaleBodies& s, const ScaleSolver::Row& r) {
   const double overlap = r.reach - dist;
   if (overlap <= kOverlapTolerance * r.reach) return overlap;
   const Vec2 n = dist > 0.0 ? Vec2(d / dist) : Vec2(1.0, 0.0);
-  const double share = overlap / (s.invMass[a] + s.invMass[b]);
-  s.position[a] -= share * s.invMass[a] * n;
-  s.position[b] += share * s.invMass[b] * n;
+  double wa = s.invMass[a], wb = s.invMass[b];
+  if (shock > 0.0) {
+    const double below = n.dot(s.down);  // > 0: b lies below a
+    const double lowA = wa * (1.0 + shock * std::min(0.0, below));
+    const double lowB = wb * (1.0 - shock * std::max(0.0, below));
+    // An immovable upper ball on a movable lower one: the lower one moves.
+    if (lowA + lowB > 0.0) {
+      wa = lowA;
+      wb = lowB;
+    }
+  }
+  const double share = overlap / (wa + wb);
+  s.position[a] -= share * wa * n;
+  s.position[b] += share * wb * n;
   return overlap;
 }
 
@@ -415,6 +428,7 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
 
   const int iterations = std::max(1, settings.scaleVelocityIterations);
   const int passes = std::max(1, settings.scalePositionPasses);
+  const double shock = std::clamp(settings.scaleShockPropagation, 0.0, 1.0);
   // What each thread saw of the overlap, written once per row: one cache
   // line per thread, or the two threads fight over one line on every row
   // (measured: 2 threads gained 1.07x at N = 10,000 with them side by side).
@@ -494,7 +508,7 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
       char& mine = seen[static_cast<std::size_t>(t)].moved[static_cast<std::size_t>(pass % 2)];
       mine = 0;
       byStrip(t, [&](const Row& r) {
-        const double overlap = projectRow(s, r);
+        const double overlap = projectRow(s, r, shock);
         if (pass == 0) deepest = std::max(deepest, overlap);
         if (overlap > kOverlapTolerance * r.reach) mine = 1;
       });

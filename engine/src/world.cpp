@@ -174,6 +174,7 @@ void World::scaleStep() {
   b.walls = scene_.walls;
   b.wallMaterial = wallMaterial_;
   b.dt = dt_;
+  if (plan_.gravity && scene_.gravity.squaredNorm() > 0.0) b.down = scene_.gravity.normalized();
   b.spin = plan_.spin;
   scaleSolver_.step(b, scene_.solver, stats_, recordImpacts_ ? &impacts_ : nullptr);
 }

@@ -23,6 +23,10 @@ TEST(CliBenchScale, BadArgumentsAreExitTwo) {
   expectBadInput("bench --scale --threads 0 --csv ''", "--threads");
   expectBadInput("bench --scale --steps -1 --csv ''", "--steps");
   expectBadInput("bench --scale --frob", "frob");
+  // CLI::Range would let NaN through (every comparison with it is false).
+  expectBadInput("bench --scale --shock nan --csv ''", "--shock");
+  expectBadInput("bench --scale --shock 1.5 --csv ''", "--shock");
+  expectBadInput("bench --scale --shock inf --csv ''", "--shock");
 }
 
 // Without --scale, bench is the catalogue benchmark: an option of the pile's
@@ -30,6 +34,7 @@ TEST(CliBenchScale, BadArgumentsAreExitTwo) {
 TEST(CliBenchScale, OptionsOfTheOtherBenchmarkAreExitTwo) {
   expectBadInput("bench --n 10", "--n needs --scale");
   expectBadInput("bench --threads 2", "--threads needs --scale");
+  expectBadInput("bench --shock 0.5", "--shock needs --scale");
   expectBadInput("bench --scale --n 10 --full", "--full is an option of the catalogue benchmark");
 }
 

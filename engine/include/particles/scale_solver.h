@@ -33,8 +33,9 @@ struct ScaleBodies {
   std::span<const Vec2> forcedVelocity;  // m/s, this step's forces; empty = none
   std::span<const WallDef> walls;
   std::span<const ContactMaterial> wallMaterial;
-  double dt = 0.0;    // s
-  bool spin = false;  // integrate angles
+  Vec2 down{0.0, 0.0};  // unit vector along gravity; zero without gravity
+  double dt = 0.0;      // s
+  bool spin = false;    // integrate angles
 };
 
 class ScaleSolver {
