@@ -295,12 +295,14 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
       r.key = (static_cast<std::uint64_t>(a) << 32) | other;
       out.push_back(r);
     };
+    std::vector<int> partners;  // this ball's, then sorted: rows in key order
     for (std::size_t ia = begin; ia < end; ++ia) {
       const int a = static_cast<int>(ia);
       const Vec2 xa = s.position[ia];
       const double ra = s.radius[ia];
       const std::size_t first = out.size();
       const int cx = ballCell_[ia] % cols, cy = ballCell_[ia] / cols;
+      partners.clear();
       for (int y = std::max(0, cy - 1); y <= std::min(rows - 1, cy + 1); ++y) {
         for (int x = std::max(0, cx - 1); x <= std::min(cols - 1, cx + 1); ++x) {
           const std::size_t c = static_cast<std::size_t>(y) * cols + x;
@@ -308,19 +310,21 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
             const int b = cellBalls_[static_cast<std::size_t>(k)];
             if (b <= a) continue;
             const Vec2 d = s.position[static_cast<std::size_t>(b)] - xa;
-            const double reach = ra + s.radius[static_cast<std::size_t>(b)];
-            const double limit = reach + margin;
-            const double dist2 = d.squaredNorm();
-            if (dist2 > limit * limit) continue;
-            const double dist = std::sqrt(dist2);
-            makeRow(a, b, dist > 0.0 ? Vec2(d / dist) : Vec2(1.0, 0.0), dist, reach,
-                    mixMaterials(s.material[ia], s.material[static_cast<std::size_t>(b)]));
+            const double limit = ra + s.radius[static_cast<std::size_t>(b)] + margin;
+            if (d.squaredNorm() <= limit * limit) partners.push_back(b);
           }
         }
       }
-      // Key order within the ball: by partner index.
-      std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(),
-                [](const Row& p, const Row& q) { return p.b < q.b; });
+      // Key order within the ball: by partner index (sorting the indices,
+      // not the 96-byte rows).
+      std::sort(partners.begin(), partners.end());
+      for (const int b : partners) {
+        const Vec2 d = s.position[static_cast<std::size_t>(b)] - xa;
+        const double reach = ra + s.radius[static_cast<std::size_t>(b)];
+        const double dist = std::sqrt(d.squaredNorm());
+        makeRow(a, b, dist > 0.0 ? Vec2(d / dist) : Vec2(1.0, 0.0), dist, reach,
+                mixMaterials(s.material[ia], s.material[static_cast<std::size_t>(b)]));
+      }
       for (std::size_t w = 0; w < s.walls.size(); ++w) {
         // A ball outside the wall's box grown by its reach cannot touch it:
         // most balls of a pile skip the segment distance altogether.
@@ -452,9 +456,12 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
   auto byStrip = [&](int t, auto&& f) {
     for (int parity = 0; parity < 2; ++parity) {
       std::array<std::size_t, kMaxStrips> at{}, end{};
+      // Thread t takes a block of neighbouring strips, so that the two
+      // threads share only the balls along one strip border.
+      const int count = (strips - parity + 1) / 2;
       int active = 0, index = 0;
       for (int st = parity; st < strips; st += 2, ++index) {
-        if (index % threads != t) continue;
+        if (index * threads / count != t) continue;
         const std::size_t i = static_cast<std::size_t>(st);
         at[static_cast<std::size_t>(active)] = static_cast<std::size_t>(stripStart_[i]);
         end[static_cast<std::size_t>(active)] = static_cast<std::size_t>(stripStart_[i + 1]);
