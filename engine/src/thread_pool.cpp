@@ -1,17 +1,47 @@
 #include "particles/thread_pool.h"
 
-namespace particles {
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#endif
 
-ThreadPool::ThreadPool(int threads) : size_(threads < 1 ? 1 : threads), barrier_(size_) {
+namespace particles {
+namespace {
+
+// About 20-60 microseconds of polling (a pause is 10-140 cycles, depending on
+// the processor) before a wait goes to sleep: long enough to cover the gap
+// between two barriers of a step, short enough that a thread that has to wait
+// for a whole step (or shares its core with another, threads > cores) sleeps.
+constexpr int kSpins = 2000;
+
+inline void relax() {
+#if defined(__x86_64__) || defined(__i386__)
+  _mm_pause();
+#else
+  std::this_thread::yield();
+#endif
+}
+
+// Waits until `value` is no longer `old`: polls, then sleeps in
+// std::atomic::wait (a futex on Linux).
+template <class T>
+void waitWhileEqual(const std::atomic<T>& value, T old) {
+  for (int i = 0; i < kSpins; ++i) {
+    if (value.load(std::memory_order_acquire) != old) return;
+    relax();
+  }
+  while (value.load(std::memory_order_acquire) == old) value.wait(old, std::memory_order_acquire);
+}
+
+}  // namespace
+
+ThreadPool::ThreadPool(int threads) : size_(threads < 1 ? 1 : threads) {
   for (int i = 1; i < size_; ++i) workers_.emplace_back([this, i] { work(i); });
 }
 
 ThreadPool::~ThreadPool() {
-  {
-    std::lock_guard lock(mutex_);
-    stop_ = true;
-  }
-  wake_.notify_all();
+  stop_.store(true, std::memory_order_relaxed);
+  generation_.fetch_add(1, std::memory_order_release);
+  generation_.notify_all();
   for (std::thread& t : workers_) t.join();
 }
 
@@ -20,40 +50,41 @@ void ThreadPool::run(const std::function<void(int)>& job) {
     job(0);
     return;
   }
-  {
-    std::lock_guard lock(mutex_);
-    job_ = &job;
-    running_ = size_ - 1;
-    ++generation_;
-  }
-  wake_.notify_all();
+  job_ = &job;
+  running_.store(size_ - 1, std::memory_order_relaxed);
+  generation_.fetch_add(1, std::memory_order_release);  // publishes job_ and running_
+  generation_.notify_all();
   job(0);
-  std::unique_lock lock(mutex_);
-  done_.wait(lock, [this] { return running_ == 0; });
+  for (int left = running_.load(std::memory_order_acquire); left != 0;
+       left = running_.load(std::memory_order_acquire))
+    waitWhileEqual(running_, left);
   job_ = nullptr;
 }
 
+// A barrier of all size() threads. The last to arrive resets the count, then
+// opens the next phase; the others wait for the phase to change. A thread
+// that leaves and arrives at the next barrier at once finds the count reset,
+// because it read the new phase (acquire) after the reset was written.
 void ThreadPool::sync() {
-  if (size_ > 1) barrier_.arrive_and_wait();
+  if (size_ == 1) return;
+  const unsigned phase = phase_.load(std::memory_order_acquire);
+  if (arrived_.fetch_add(1, std::memory_order_acq_rel) + 1 == size_) {
+    arrived_.store(0, std::memory_order_relaxed);
+    phase_.store(phase + 1, std::memory_order_release);
+    phase_.notify_all();
+    return;
+  }
+  waitWhileEqual(phase_, phase);
 }
 
 void ThreadPool::work(int index) {
   long long seen = 0;
   for (;;) {
-    const std::function<void(int)>* job = nullptr;
-    {
-      std::unique_lock lock(mutex_);
-      wake_.wait(lock, [&] { return stop_ || generation_ != seen; });
-      if (stop_) return;
-      seen = generation_;
-      job = job_;
-    }
-    (*job)(index);
-    {
-      std::lock_guard lock(mutex_);
-      --running_;
-    }
-    done_.notify_one();
+    waitWhileEqual(generation_, seen);
+    seen = generation_.load(std::memory_order_acquire);
+    if (stop_.load(std::memory_order_relaxed)) return;
+    (*job_)(index);
+    if (running_.fetch_sub(1, std::memory_order_acq_rel) == 1) running_.notify_all();
   }
 }
 

@@ -5,11 +5,9 @@
 // timing, so results never depend on how the threads were scheduled.
 #pragma once
 
-#include <barrier>
-#include <condition_variable>
+#include <atomic>
 #include <functional>
 #include <memory>
-#include <mutex>
 #include <thread>
 #include <vector>
 
@@ -30,13 +28,16 @@ class ThreadPool {
   void work(int index);
 
   int size_;
-  std::barrier<> barrier_;
-  std::mutex mutex_;
-  std::condition_variable wake_, done_;
+  // Every wait below spins for a few tens of microseconds before it sleeps:
+  // a step of the 10,000-ball pile has about 30 barriers, and waking a
+  // sleeping thread costs more than the work between two of them
+  // (docs/scale.md, "Threads that wait by spinning").
+  std::atomic<int> arrived_{0};           // threads at the current barrier
+  std::atomic<unsigned> phase_{0};        // barriers completed
+  std::atomic<long long> generation_{0};  // jobs started
+  std::atomic<int> running_{0};           // workers still in the current job
+  std::atomic<bool> stop_{false};
   const std::function<void(int)>* job_ = nullptr;
-  long long generation_ = 0;
-  int running_ = 0;
-  bool stop_ = false;
   std::vector<std::thread> workers_;
 };
 
