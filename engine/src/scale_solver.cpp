@@ -187,7 +187,8 @@ std::size_t ScaleSolver::memoryBytes() const {
       sizeof(int) * (stripStart_.capacity() + stripCount_.capacity()) +
       sizeof(std::uint64_t) * lastKey_.capacity() + sizeof(int) * stripOf_.capacity() +
       sizeof(int) * slot_.capacity() + sizeof(double) * (lastN_.capacity() + lastT_.capacity()) +
-      sizeof(int) * (cellStart_.capacity() + cellBalls_.capacity() + ballCell_.capacity()) +
+      sizeof(int) * (cellStart_.capacity() + ballCell_.capacity()) +
+      sizeof(CellBall) * cellBalls_.capacity() +
       sizeof(std::vector<Row>) * found_.capacity();
   for (const std::vector<Row>& f : found_) bytes += sizeof(Row) * f.capacity();
   return bytes;
@@ -235,11 +236,14 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
     ++cellStart_[static_cast<std::size_t>(c) + 1];
   }
   for (std::size_t c = 1; c < cellStart_.size(); ++c) cellStart_[c] += cellStart_[c - 1];
+  // Each ball's position, radius and index in cell order: the three cells
+  // of a grid row around a ball are one contiguous run of this array.
   cellBalls_.resize(n);
   std::vector<int> next(cellStart_.begin(), cellStart_.end() - 1);
-  for (std::size_t i = 0; i < n; ++i)
-    cellBalls_[static_cast<std::size_t>(next[static_cast<std::size_t>(ballCell_[i])]++)] =
-        static_cast<int>(i);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t k = static_cast<std::size_t>(next[static_cast<std::size_t>(ballCell_[i])]++);
+    cellBalls_[k] = {s.position[i], s.radius[i], static_cast<int>(i)};
+  }
   gridCols_ = cols;
 
   const int threads = pool.size();
@@ -303,16 +307,16 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
       const std::size_t first = out.size();
       const int cx = ballCell_[ia] % cols, cy = ballCell_[ia] / cols;
       partners.clear();
+      const int x0 = std::max(0, cx - 1), x1 = std::min(cols - 1, cx + 1);
       for (int y = std::max(0, cy - 1); y <= std::min(rows - 1, cy + 1); ++y) {
-        for (int x = std::max(0, cx - 1); x <= std::min(cols - 1, cx + 1); ++x) {
-          const std::size_t c = static_cast<std::size_t>(y) * cols + x;
-          for (int k = cellStart_[c]; k < cellStart_[c + 1]; ++k) {
-            const int b = cellBalls_[static_cast<std::size_t>(k)];
-            if (b <= a) continue;
-            const Vec2 d = s.position[static_cast<std::size_t>(b)] - xa;
-            const double limit = ra + s.radius[static_cast<std::size_t>(b)] + margin;
-            if (d.squaredNorm() <= limit * limit) partners.push_back(b);
-          }
+        const std::size_t row = static_cast<std::size_t>(y) * static_cast<std::size_t>(cols);
+        const CellBall* k = cellBalls_.data() + cellStart_[row + static_cast<std::size_t>(x0)];
+        const CellBall* stop = cellBalls_.data() + cellStart_[row + static_cast<std::size_t>(x1) + 1];
+        for (; k != stop; ++k) {
+          if (k->index <= a) continue;
+          const Vec2 d = k->position - xa;
+          const double limit = ra + k->radius + margin;
+          if (d.squaredNorm() <= limit * limit) partners.push_back(k->index);
         }
       }
       // Key order within the ball: by partner index (sorting the indices,

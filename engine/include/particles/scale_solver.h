@@ -92,7 +92,13 @@ class ScaleSolver {
   std::vector<std::uint64_t> lastKey_;
   std::vector<double> lastN_, lastT_;
   // Grid (counting sort of balls into cells).
-  std::vector<int> cellStart_, cellBalls_, ballCell_;
+  struct CellBall {
+    Vec2 position;  // m
+    double radius;  // m
+    int index;      // the ball's
+  };
+  std::vector<int> cellStart_, ballCell_;
+  std::vector<CellBall> cellBalls_;  // the balls in cell order
   int gridCols_ = 0;  // columns of this step's grid
   PoolHandle pool_;
 };
