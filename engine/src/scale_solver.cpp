@@ -140,7 +140,7 @@ inline void restituteRow(ScaleSolver::Motion* m, ScaleSolver::Row& r) {
 // except that under gravity the lower ball's share is scaled by
 // 1 - shock |n . down| (SolverSettings::scaleShockPropagation).
 // Returns the overlap found (m, <= 0 when apart).
-inline double projectRow(const ScaleBodies& s, const ScaleSolver::Row& r, double shock) {
+inline double projectRow(const ScaleBodies& s, const ScaleSolver::Pair& r, double shock) {
   const int a = r.a;
   if (r.b < 0) {
     WallHit hit;
@@ -152,7 +152,11 @@ inline double projectRow(const ScaleBodies& s, const ScaleSolver::Row& r, double
   }
   const int b = r.b;
   const Vec2 d = s.position[b] - s.position[a];
-  const double dist = d.norm();
+  const double dist2 = d.squaredNorm();
+  // Apart (most speculative rows): no square root. Nothing moves, and an
+  // overlap <= 0 changes neither the deepest overlap seen nor the flags.
+  if (dist2 >= r.reach * r.reach) return 0.0;
+  const double dist = std::sqrt(dist2);
   const double overlap = r.reach - dist;
   if (overlap <= kOverlapTolerance * r.reach) return overlap;
   const Vec2 n = dist > 0.0 ? Vec2(d / dist) : Vec2(1.0, 0.0);
@@ -183,7 +187,8 @@ void ScaleSolver::reset() {
 
 std::size_t ScaleSolver::memoryBytes() const {
   std::size_t bytes =
-      sizeof(Row) * rows_.capacity() + sizeof(Motion) * motion_.capacity() +
+      sizeof(Row) * rows_.capacity() + sizeof(Pair) * pairs_.capacity() +
+      sizeof(Motion) * motion_.capacity() +
       sizeof(int) * (stripStart_.capacity() + stripCount_.capacity()) +
       sizeof(std::uint64_t) * lastKey_.capacity() + sizeof(int) * stripOf_.capacity() +
       sizeof(int) * slot_.capacity() + sizeof(double) * (lastN_.capacity() + lastT_.capacity()) +
@@ -380,6 +385,7 @@ void ScaleSolver::partition(const ScaleBodies& s, ThreadPool& pool) {
         offset[static_cast<std::size_t>(t)] + found_[static_cast<std::size_t>(t)].size();
   slot_.resize(offset.back());
   rows_.resize(offset.back());
+  pairs_.resize(offset.back());
   stripStart_.assign(width, 0);
   pool.run([&](int t) {
     const auto [b, e] = part(n, t, threads);
@@ -417,6 +423,7 @@ void ScaleSolver::partition(const ScaleBodies& s, ThreadPool& pool) {
     for (std::size_t k = 0; k < mine.size(); ++k) {
       const int pos = count[slot[k]]++;
       rows_[static_cast<std::size_t>(pos)] = mine[k];
+      pairs_[static_cast<std::size_t>(pos)] = {mine[k].a, mine[k].b, mine[k].reach};
       slot[k] = pos;
     }
   });
@@ -474,7 +481,7 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
       while (active > 0) {
         for (int j = 0; j < active;) {
           const std::size_t u = static_cast<std::size_t>(j);
-          f(rows_[at[u]++]);
+          f(at[u]++);
           if (at[u] == end[u]) {
             // This strip is done: the last active one takes its place.
             --active;
@@ -499,11 +506,12 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
       m[i] = {s.velocity[i], s.angularVelocity[i], s.invMass[i], s.invInertia[i], s.radius[i]};
     pool.sync();
     // Warm start: the last step's impulses, applied again.
-    byStrip(t, [&](Row& r) {
+    byStrip(t, [&](std::size_t k) {
+      Row& r = rows_[k];
       if (r.lambdaN != 0.0 || r.lambdaT != 0.0) applyRow(m, r, r.lambdaN, r.lambdaT);
     });
-    for (int it = 0; it < iterations; ++it) byStrip(t, [&](Row& r) { solveRow(m, r); });
-    byStrip(t, [&](Row& r) { restituteRow(m, r); });
+    for (int it = 0; it < iterations; ++it) byStrip(t, [&](std::size_t k) { solveRow(m, rows_[k]); });
+    byStrip(t, [&](std::size_t k) { restituteRow(m, rows_[k]); });
 
     for (std::size_t i = b; i < e; ++i) {
       s.velocity[i] = m[i].velocity;
@@ -518,7 +526,8 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
     for (int pass = 0; pass < passes; ++pass) {
       char& mine = seen[static_cast<std::size_t>(t)].moved[static_cast<std::size_t>(pass % 2)];
       mine = 0;
-      byStrip(t, [&](const Row& r) {
+      byStrip(t, [&](std::size_t k) {
+        const Pair& r = pairs_[k];
         const double overlap = projectRow(s, r, shock);
         if (pass == 0) deepest = std::max(deepest, overlap);
         if (overlap > kOverlapTolerance * r.reach) mine = 1;

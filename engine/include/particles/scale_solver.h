@@ -50,9 +50,9 @@ class ScaleSolver {
 
   // One contact row: a ball pair, or a ball and a wall (b < 0).
   struct Row {
+    Vec2 normal{1.0, 0.0};  // unit, from a to b (first: a Vec2 is 16-byte aligned)
     int a = 0;
     int b = 0;              // ball index, or -1 - wall index
-    Vec2 normal{1.0, 0.0};  // unit, from a to b
     double reach = 0.0;     // m, r_a + r_b (ball pair) or r_a (wall)
     double massN = 0.0;     // kg, 1 / (1/m_a + 1/m_b)
     double massT = 0.0;     // kg, 1 / (1/m_a + 1/m_b + r_a^2/J_a + r_b^2/J_b)
@@ -65,6 +65,13 @@ class ScaleSolver {
     double lambdaN = 0.0;   // N s, accumulated normal impulse (>= 0)
     double lambdaT = 0.0;   // N s, accumulated tangential impulse
     std::uint64_t key = 0;  // (a, b) for warm starting, in the contact order
+  };
+
+  // A row as the overlap removal sees it: 16 bytes instead of a Row's 96.
+  struct Pair {
+    int a = 0;
+    int b = 0;           // ball index, or -1 - wall index
+    double reach = 0.0;  // m
   };
 
   // A ball as the velocity iterations see it, packed in 48 bytes.
@@ -83,6 +90,7 @@ class ScaleSolver {
   // Rows of this step in key order (each thread fills its own range of balls).
   std::vector<std::vector<Row>> found_;
   std::vector<Row> rows_;        // in solve order: by strip, then key
+  std::vector<Pair> pairs_;      // rows_'s balls and reach, in the same order
   std::vector<int> stripStart_;  // rows_ of strip k: [stripStart_[k], stripStart_[k+1])
   std::vector<int> stripOf_;     // per ball: its vertical strip
   std::vector<Motion> motion_;   // per ball, during the velocity iterations
