@@ -75,6 +75,10 @@ inline double frictionChange(ScaleSolver::Row& r, double gt) {
 inline void solveBallRow(ScaleSolver::Motion& a, ScaleSolver::Motion& b, ScaleSolver::Row& r) {
   const Vec2 n = r.normal, tau = perpLeft(n);
   Vec2 va = a.velocity, vb = b.velocity;
+  // A row without impulse whose bodies already part fast enough (most
+  // speculative rows): friction bounded by mu * 0 and a normal impulse
+  // clamped at 0 would change nothing, so nothing is computed or stored.
+  if (r.lambdaN == 0.0 && r.lambdaT == 0.0 && (vb - va).dot(n) >= r.target) return;
   double wa = a.angularVelocity, wb = b.angularVelocity;
   if (r.friction > 0.0) {
     const double gt = (vb - va).dot(tau) - wb * b.radius - wa * a.radius;
@@ -99,6 +103,7 @@ inline void solveBallRow(ScaleSolver::Motion& a, ScaleSolver::Motion& b, ScaleSo
 inline void solveWallRow(ScaleSolver::Motion& a, ScaleSolver::Row& r) {
   const Vec2 n = r.normal, tau = perpLeft(n);
   Vec2 va = a.velocity;
+  if (r.lambdaN == 0.0 && r.lambdaT == 0.0 && -va.dot(n) >= r.target) return;
   double wa = a.angularVelocity;
   if (r.friction > 0.0) {
     const double gt = -va.dot(tau) - wa * a.radius;
