@@ -182,6 +182,25 @@ inline double projectRow(const ScaleBodies& s, const ScaleSolver::Pair& r, doubl
   return overlap;
 }
 
+// Writes to `out` the balls of [k, stop) after ball a (by index) whose
+// centres lie within ra + their radius + margin of xa; returns the new end.
+// `out` must have room for every candidate. A function of its own so that the
+// loop's values stay in registers (in the pair search's lambda every captured
+// value was reloaded after each store).
+inline int* nearBalls(const ScaleSolver::CellBall* k, const ScaleSolver::CellBall* stop, int a,
+                      Vec2 xa, double ra, double margin, int* out) {
+  // Without branches: whether a candidate is kept is as good as random
+  // (half of them come before a), and mispredicted jumps cost more than the
+  // arithmetic of the rejected ones.
+  for (; k != stop; ++k) {
+    const Vec2 d = k->position - xa;
+    const double limit = ra + k->radius + margin;
+    *out = k->index;
+    out += static_cast<int>(k->index > a) & static_cast<int>(d.squaredNorm() <= limit * limit);
+  }
+  return out;
+}
+
 }  // namespace
 
 void ScaleSolver::reset() {
@@ -198,8 +217,7 @@ std::size_t ScaleSolver::memoryBytes() const {
       sizeof(std::uint64_t) * lastKey_.capacity() + sizeof(int) * stripOf_.capacity() +
       sizeof(int) * slot_.capacity() + sizeof(double) * (lastN_.capacity() + lastT_.capacity()) +
       sizeof(int) * (cellStart_.capacity() + ballCell_.capacity()) +
-      sizeof(CellBall) * cellBalls_.capacity() +
-      sizeof(std::vector<Row>) * found_.capacity();
+      sizeof(CellBall) * cellBalls_.capacity() + sizeof(std::vector<Row>) * found_.capacity();
   for (const std::vector<Row>& f : found_) bytes += sizeof(Row) * f.capacity();
   return bytes;
 }
@@ -310,25 +328,31 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
       out.push_back(r);
     };
     std::vector<int> partners;  // this ball's, then sorted: rows in key order
+    const CellBall* cells = cellBalls_.data();
     for (std::size_t ia = begin; ia < end; ++ia) {
       const int a = static_cast<int>(ia);
       const Vec2 xa = s.position[ia];
       const double ra = s.radius[ia];
       const std::size_t first = out.size();
       const int cx = ballCell_[ia] % cols, cy = ballCell_[ia] / cols;
-      partners.clear();
       const int x0 = std::max(0, cx - 1), x1 = std::min(cols - 1, cx + 1);
-      for (int y = std::max(0, cy - 1); y <= std::min(rows - 1, cy + 1); ++y) {
+      const int y0 = std::max(0, cy - 1), y1 = std::min(rows - 1, cy + 1);
+      std::array<std::pair<int, int>, 3> runs{};
+      std::size_t candidates = 0;
+      for (int y = y0; y <= y1; ++y) {
         const std::size_t row = static_cast<std::size_t>(y) * static_cast<std::size_t>(cols);
-        const CellBall* k = cellBalls_.data() + cellStart_[row + static_cast<std::size_t>(x0)];
-        const CellBall* stop = cellBalls_.data() + cellStart_[row + static_cast<std::size_t>(x1) + 1];
-        for (; k != stop; ++k) {
-          if (k->index <= a) continue;
-          const Vec2 d = k->position - xa;
-          const double limit = ra + k->radius + margin;
-          if (d.squaredNorm() <= limit * limit) partners.push_back(k->index);
-        }
+        std::pair<int, int>& run = runs[static_cast<std::size_t>(y - y0)];
+        run = {cellStart_[row + static_cast<std::size_t>(x0)],
+               cellStart_[row + static_cast<std::size_t>(x1) + 1]};
+        candidates += static_cast<std::size_t>(run.second - run.first);
       }
+      partners.resize(candidates);
+      int* near = partners.data();
+      for (int y = y0; y <= y1; ++y) {
+        const std::pair<int, int> run = runs[static_cast<std::size_t>(y - y0)];
+        near = nearBalls(cells + run.first, cells + run.second, a, xa, ra, margin, near);
+      }
+      partners.resize(static_cast<std::size_t>(near - partners.data()));
       // Key order within the ball: by partner index (sorting the indices,
       // not the 96-byte rows).
       std::sort(partners.begin(), partners.end());
@@ -515,7 +539,8 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
       Row& r = rows_[k];
       if (r.lambdaN != 0.0 || r.lambdaT != 0.0) applyRow(m, r, r.lambdaN, r.lambdaT);
     });
-    for (int it = 0; it < iterations; ++it) byStrip(t, [&](std::size_t k) { solveRow(m, rows_[k]); });
+    for (int it = 0; it < iterations; ++it)
+      byStrip(t, [&](std::size_t k) { solveRow(m, rows_[k]); });
     byStrip(t, [&](std::size_t k) { restituteRow(m, rows_[k]); });
 
     for (std::size_t i = b; i < e; ++i) {

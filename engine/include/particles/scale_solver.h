@@ -74,6 +74,13 @@ class ScaleSolver {
     double reach = 0.0;  // m
   };
 
+  // A ball as the pair search sees it, in the grid's cell order.
+  struct CellBall {
+    Vec2 position;  // m
+    double radius;  // m
+    int index;      // the ball's
+  };
+
   // A ball as the velocity iterations see it, packed in 48 bytes.
   struct Motion {
     Vec2 velocity{0.0, 0.0};       // m/s
@@ -100,14 +107,9 @@ class ScaleSolver {
   std::vector<std::uint64_t> lastKey_;
   std::vector<double> lastN_, lastT_;
   // Grid (counting sort of balls into cells).
-  struct CellBall {
-    Vec2 position;  // m
-    double radius;  // m
-    int index;      // the ball's
-  };
   std::vector<int> cellStart_, ballCell_;
   std::vector<CellBall> cellBalls_;  // the balls in cell order
-  int gridCols_ = 0;  // columns of this step's grid
+  int gridCols_ = 0;                 // columns of this step's grid
   PoolHandle pool_;
 };
 
