@@ -217,8 +217,8 @@ std::size_t ScaleSolver::memoryBytes() const {
       sizeof(std::uint64_t) * lastKey_.capacity() + sizeof(int) * stripOf_.capacity() +
       sizeof(int) * slot_.capacity() + sizeof(double) * (lastN_.capacity() + lastT_.capacity()) +
       sizeof(int) * (cellStart_.capacity() + ballCell_.capacity()) +
-      sizeof(CellBall) * cellBalls_.capacity() + sizeof(std::vector<Row>) * found_.capacity();
-  for (const std::vector<Row>& f : found_) bytes += sizeof(Row) * f.capacity();
+      sizeof(CellBall) * cellBalls_.capacity() + sizeof(ThreadRows) * found_.capacity();
+  for (const ThreadRows& f : found_) bytes += sizeof(Row) * f.rows.capacity();
   return bytes;
 }
 
@@ -278,7 +278,7 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
   found_.resize(static_cast<std::size_t>(threads));
   const std::uint64_t wallBase = n;
   pool.run([&](int t) {
-    std::vector<Row>& out = found_[static_cast<std::size_t>(t)];
+    std::vector<Row>& out = found_[static_cast<std::size_t>(t)].rows;
     out.clear();
     const auto [begin, end] = part(n, t, threads);
     // The last step's impulses are sorted by key, as these rows are made.
@@ -407,11 +407,13 @@ void ScaleSolver::partition(const ScaleBodies& s, ThreadPool& pool) {
   const int threads = pool.size();
   const std::size_t width = static_cast<std::size_t>(strips) + 1;
   stripOf_.resize(n);
-  stripCount_.assign(static_cast<std::size_t>(threads) * width, 0);
+  // Each thread's counters on cache lines of their own (16 ints = 64 bytes).
+  const std::size_t stride = (width + 15) / 16 * 16;
+  stripCount_.assign(static_cast<std::size_t>(threads) * stride, 0);
   std::vector<std::size_t> offset(static_cast<std::size_t>(threads) + 1, 0);
   for (int t = 0; t < threads; ++t)
     offset[static_cast<std::size_t>(t) + 1] =
-        offset[static_cast<std::size_t>(t)] + found_[static_cast<std::size_t>(t)].size();
+        offset[static_cast<std::size_t>(t)] + found_[static_cast<std::size_t>(t)].rows.size();
   slot_.resize(offset.back());
   rows_.resize(offset.back());
   pairs_.resize(offset.back());
@@ -422,8 +424,8 @@ void ScaleSolver::partition(const ScaleBodies& s, ThreadPool& pool) {
     for (std::size_t i = b; i < e; ++i)
       stripOf_[i] = (ballCell_[i] % gridCols_) * strips / gridCols_;
     pool.sync();
-    const std::vector<Row>& mine = found_[static_cast<std::size_t>(t)];
-    int* count = stripCount_.data() + static_cast<std::size_t>(t) * width;
+    const std::vector<Row>& mine = found_[static_cast<std::size_t>(t)].rows;
+    int* count = stripCount_.data() + static_cast<std::size_t>(t) * stride;
     int* slot = slot_.data() + offset[static_cast<std::size_t>(t)];
     for (std::size_t k = 0; k < mine.size(); ++k) {
       const Row& r = mine[k];
@@ -440,7 +442,7 @@ void ScaleSolver::partition(const ScaleBodies& s, ThreadPool& pool) {
       for (int st = 0; st < strips; ++st) {
         stripStart_[static_cast<std::size_t>(st)] = at;
         for (int u = 0; u < threads; ++u) {
-          int& c = stripCount_[static_cast<std::size_t>(u) * width + static_cast<std::size_t>(st)];
+          int& c = stripCount_[static_cast<std::size_t>(u) * stride + static_cast<std::size_t>(st)];
           const int rowsHere = c;
           c = at;
           at += rowsHere;
