@@ -1,5 +1,7 @@
 #include "particles/thread_pool.h"
 
+#include <chrono>
+
 #if defined(__x86_64__) || defined(__i386__)
 #include <immintrin.h>
 #endif
@@ -7,11 +9,14 @@
 namespace particles {
 namespace {
 
-// About 20-60 microseconds of polling (a pause is 10-140 cycles, depending on
-// the processor) before a wait goes to sleep: long enough to cover the gap
-// between two barriers of a step, short enough that a thread that has to wait
-// for a whole step (or shares its core with another, threads > cores) sleeps.
-constexpr int kSpins = 2000;
+// How long a wait polls before it goes to sleep. A sleeping thread takes
+// tens of microseconds to wake on this project's 2-core VM, and the pile's
+// threads wait for each other at every barrier (a few per step, each after
+// ~0.1 ms of work): with 2,000 pauses (20-60 us, depending on the processor)
+// the faster thread fell asleep and the slower one then waited for it to wake
+// (0.16-0.23 s of 600 steps at N = 10,000; measured in docs/scale.md). A
+// thread that has to wait longer (a whole step, or threads > cores) sleeps.
+constexpr std::chrono::microseconds kSpinTime{200};
 
 inline void relax() {
 #if defined(__x86_64__) || defined(__i386__)
@@ -25,9 +30,12 @@ inline void relax() {
 // std::atomic::wait (a futex on Linux).
 template <class T>
 void waitWhileEqual(const std::atomic<T>& value, T old) {
-  for (int i = 0; i < kSpins; ++i) {
+  const auto until = std::chrono::steady_clock::now() + kSpinTime;
+  for (unsigned i = 1;; ++i) {
     if (value.load(std::memory_order_acquire) != old) return;
     relax();
+    // The clock is read every 64 pauses (a pause is 10-140 cycles).
+    if (i % 64 == 0 && std::chrono::steady_clock::now() > until) break;
   }
   while (value.load(std::memory_order_acquire) == old) value.wait(old, std::memory_order_acquire);
 }
