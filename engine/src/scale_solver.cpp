@@ -201,6 +201,57 @@ inline int* nearBalls(const ScaleSolver::CellBall* k, const ScaleSolver::CellBal
   return out;
 }
 
+// Whether a ball (centre x, radius grown by the margin) reaches a wall, with
+// the hit as touchWall gives it. A ball outside the wall's box grown by its
+// reach cannot touch it: most balls of a pile skip the segment distance.
+inline bool nearWall(const Vec2& x, double grown, const WallDef& wall, WallHit& hit) {
+  if (x.x() + grown < std::min(wall.a.x(), wall.b.x()) ||
+      x.x() - grown > std::max(wall.a.x(), wall.b.x()) ||
+      x.y() + grown < std::min(wall.a.y(), wall.b.y()) ||
+      x.y() - grown > std::max(wall.a.y(), wall.b.y()))
+    return false;
+  return touchWall(x, grown, wall, hit);
+}
+
+// A row's masses and targets, from its bodies (r.a, r.b), normal and reach,
+// the distance of the centres (or of the centre from the wall) and the
+// mixed material.
+inline void fillRow(const ScaleBodies& s, const ContactMaterial& m, double dist,
+                    ScaleSolver::Row& r) {
+  const int a = r.a, b = r.b;
+  const double invA = s.invMass[a], invB = b >= 0 ? s.invMass[b] : 0.0;
+  r.massN = 1.0 / (invA + invB);
+  r.friction = m.friction;
+  if (m.friction > 0.0) {
+    const double ra = s.radius[a], rb = b >= 0 ? s.radius[b] : 0.0;
+    const double jb = b >= 0 ? rb * rb * s.invInertia[b] : 0.0;
+    r.massT = 1.0 / (invA + invB + ra * ra * s.invInertia[a] + jb);
+  }
+  // The approach the bodies brought into the step: what this step's
+  // forces added is cancelled, not bounced (docs/physics.md).
+  const Vec2 vb = b >= 0 ? s.velocity[b] : Vec2::Zero();
+  const double gn = (vb - s.velocity[a]).dot(r.normal);
+  double forced = 0.0;
+  if (!s.forcedVelocity.empty()) {
+    const Vec2 fb = b >= 0 ? s.forcedVelocity[b] : Vec2::Zero();
+    forced = (fb - s.forcedVelocity[a]).dot(r.normal);
+  }
+  const double brought = gn - forced;
+  if (dist > r.reach * (1.0 + kTouchSlop)) {
+    // Apart: may approach by at most the gap within the step. If the
+    // approach closes the gap, the bodies collide within this step, and
+    // the restitution pass gives them their bounce: without it every
+    // impact caught early would be perfectly inelastic (an elastic gas
+    // of 1,000 balls lost 10 % of its energy in 0.25 s).
+    const double gap = dist - r.reach;
+    r.target = -gap / s.dt;
+    if (brought * s.dt < -gap) r.bounce = -m.restitution * brought;
+  } else {
+    // Touching: bounce the approach brought into the step.
+    r.target = brought < 0.0 ? -m.restitution * brought : 0.0;
+  }
+}
+
 }  // namespace
 
 void ScaleSolver::reset() {
@@ -217,8 +268,8 @@ std::size_t ScaleSolver::memoryBytes() const {
       sizeof(std::uint64_t) * lastKey_.capacity() + sizeof(int) * stripOf_.capacity() +
       sizeof(int) * slot_.capacity() + sizeof(double) * (lastN_.capacity() + lastT_.capacity()) +
       sizeof(int) * (cellStart_.capacity() + ballCell_.capacity()) +
-      sizeof(CellBall) * cellBalls_.capacity() + sizeof(ThreadRows) * found_.capacity();
-  for (const ThreadRows& f : found_) bytes += sizeof(Row) * f.rows.capacity();
+      sizeof(CellBall) * cellBalls_.capacity() + sizeof(ThreadLinks) * found_.capacity();
+  for (const ThreadLinks& f : found_) bytes += sizeof(Link) * f.links.capacity();
   return bytes;
 }
 
@@ -274,66 +325,44 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
   }
   gridCols_ = cols;
 
+  // Rows are split into vertical strips of kStripColumns grid columns, so a
+  // row joins balls of the same or of neighbouring strips; a row belongs to
+  // the strip of its left ball. Rows of two even strips (or of two odd
+  // strips) then share no ball: all even strips can be solved at once, each in
+  // key order (Gauss-Seidel), then all odd strips. The strips depend on the
+  // positions only, never on the thread count, so the result is the same for
+  // any count.
+  const int strips = std::clamp(cols / kStripColumns, 1, kMaxStrips);
   const int threads = pool.size();
+  const std::size_t width = static_cast<std::size_t>(strips) + 1;
+  // Each thread's counters on cache lines of their own (16 ints = 64 bytes).
+  const std::size_t stride = (width + 15) / 16 * 16;
+  stripOf_.resize(n);
+  stripCount_.assign(static_cast<std::size_t>(threads) * stride, 0);
+  stripStart_.assign(width, 0);
   found_.resize(static_cast<std::size_t>(threads));
+  std::vector<std::size_t> offset(static_cast<std::size_t>(threads) + 1, 0);
   const std::uint64_t wallBase = n;
+  const CellBall* cells = cellBalls_.data();
   pool.run([&](int t) {
-    std::vector<Row>& out = found_[static_cast<std::size_t>(t)].rows;
-    out.clear();
     const auto [begin, end] = part(n, t, threads);
-    // The last step's impulses are sorted by key, as these rows are made.
-    auto last =
-        std::lower_bound(lastKey_.begin(), lastKey_.end(), static_cast<std::uint64_t>(begin) << 32);
-    auto makeRow = [&](int a, int b, const Vec2& normal, double dist, double reach,
-                       const ContactMaterial& m) {
-      Row r;
-      r.a = a;
-      r.b = b;
-      r.normal = normal;
-      r.reach = reach;
-      const double invA = s.invMass[a], invB = b >= 0 ? s.invMass[b] : 0.0;
-      r.massN = 1.0 / (invA + invB);
-      r.friction = m.friction;
-      if (m.friction > 0.0) {
-        const double ra = s.radius[a], rb = b >= 0 ? s.radius[b] : 0.0;
-        const double jb = b >= 0 ? rb * rb * s.invInertia[b] : 0.0;
-        r.massT = 1.0 / (invA + invB + ra * ra * s.invInertia[a] + jb);
-      }
-      // The approach the bodies brought into the step: what this step's
-      // forces added is cancelled, not bounced (docs/physics.md).
-      const Vec2 vb = b >= 0 ? s.velocity[b] : Vec2::Zero();
-      const double gn = (vb - s.velocity[a]).dot(normal);
-      double forced = 0.0;
-      if (!s.forcedVelocity.empty()) {
-        const Vec2 fb = b >= 0 ? s.forcedVelocity[b] : Vec2::Zero();
-        forced = (fb - s.forcedVelocity[a]).dot(normal);
-      }
-      const double brought = gn - forced;
-      if (dist > reach * (1.0 + kTouchSlop)) {
-        // Apart: may approach by at most the gap within the step. If the
-        // approach closes the gap, the bodies collide within this step, and
-        // the restitution pass gives them their bounce: without it every
-        // impact caught early would be perfectly inelastic (an elastic gas
-        // of 1,000 balls lost 10 % of its energy in 0.25 s).
-        const double gap = dist - reach;
-        r.target = -gap / s.dt;
-        if (brought * s.dt < -gap) r.bounce = -m.restitution * brought;
-      } else {
-        // Touching: bounce the approach brought into the step.
-        r.target = brought < 0.0 ? -m.restitution * brought : 0.0;
-      }
-      const std::uint64_t other =
-          b >= 0 ? static_cast<std::uint64_t>(b) : wallBase + static_cast<std::uint64_t>(-1 - b);
-      r.key = (static_cast<std::uint64_t>(a) << 32) | other;
-      out.push_back(r);
-    };
+    // Whole grid columns per strip: neighbours are at most one column apart.
+    for (std::size_t i = begin; i < end; ++i) stripOf_[i] = (ballCell_[i] % cols) * strips / cols;
+    pool.sync();
+
+    // First the pairs only (8 bytes each), in key order, counted per strip;
+    // then, once every thread's counts are known, each row is made in its
+    // place in strip order. Making the 96-byte rows first and moving them
+    // into strip order afterwards cost a tenth of the step at N = 100,000.
+    std::vector<Link>& links = found_[static_cast<std::size_t>(t)].links;
+    links.clear();
+    int* count = stripCount_.data() + static_cast<std::size_t>(t) * stride;
     std::vector<int> partners;  // this ball's, then sorted: rows in key order
-    const CellBall* cells = cellBalls_.data();
     for (std::size_t ia = begin; ia < end; ++ia) {
       const int a = static_cast<int>(ia);
       const Vec2 xa = s.position[ia];
       const double ra = s.radius[ia];
-      const std::size_t first = out.size();
+      const int sa = stripOf_[ia];
       const int cx = ballCell_[ia] % cols, cy = ballCell_[ia] / cols;
       const int x0 = std::max(0, cx - 1), x1 = std::min(cols - 1, cx + 1);
       const int y0 = std::max(0, cy - 1), y1 = std::min(rows - 1, cy + 1);
@@ -353,91 +382,30 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
         near = nearBalls(cells + run.first, cells + run.second, a, xa, ra, margin, near);
       }
       partners.resize(static_cast<std::size_t>(near - partners.data()));
-      // Key order within the ball: by partner index (sorting the indices,
-      // not the 96-byte rows).
+      // Key order within the ball: by partner index.
       std::sort(partners.begin(), partners.end());
       for (const int b : partners) {
-        const Vec2 d = s.position[static_cast<std::size_t>(b)] - xa;
-        const double reach = ra + s.radius[static_cast<std::size_t>(b)];
-        const double dist = std::sqrt(d.squaredNorm());
-        makeRow(a, b, dist > 0.0 ? Vec2(d / dist) : Vec2(1.0, 0.0), dist, reach,
-                mixMaterials(s.material[ia], s.material[static_cast<std::size_t>(b)]));
+        links.push_back({a, b});
+        ++count[std::min(sa, stripOf_[static_cast<std::size_t>(b)])];
       }
       for (std::size_t w = 0; w < s.walls.size(); ++w) {
-        // A ball outside the wall's box grown by its reach cannot touch it:
-        // most balls of a pile skip the segment distance altogether.
-        const WallDef& wall = s.walls[w];
-        const double grow = ra + margin;
-        if (xa.x() + grow < std::min(wall.a.x(), wall.b.x()) ||
-            xa.x() - grow > std::max(wall.a.x(), wall.b.x()) ||
-            xa.y() + grow < std::min(wall.a.y(), wall.b.y()) ||
-            xa.y() - grow > std::max(wall.a.y(), wall.b.y()))
-          continue;
         WallHit hit;
-        if (!touchWall(xa, ra + margin, wall, hit)) continue;
-        const double dist = ra + margin - hit.overlap;
-        makeRow(a, -1 - static_cast<int>(w), hit.normal, dist, ra,
-                mixMaterials(s.material[ia], s.wallMaterial[w]));
+        if (!nearWall(xa, ra + margin, s.walls[w], hit)) continue;
+        links.push_back({a, -1 - static_cast<int>(w)});
+        ++count[sa];
       }
-      // Warm start from the last step's row with the same key, if any.
-      for (std::size_t k = first; k < out.size(); ++k) {
-        while (last != lastKey_.end() && *last < out[k].key) ++last;
-        if (last != lastKey_.end() && *last == out[k].key) {
-          const std::size_t j = static_cast<std::size_t>(last - lastKey_.begin());
-          out[k].lambdaN = lastN_[j];
-          out[k].lambdaT = lastT_[j];
-        }
-      }
-    }
-  });
-}
-
-// Rows are split into vertical strips of kStripColumns grid columns, so a row
-// joins balls of the same or of neighbouring strips; a row belongs to the
-// strip of its left ball. Rows of two even strips (or of two odd strips) then
-// share no ball: all even strips can be solved at once, each in key order
-// (Gauss-Seidel), then all odd strips. The strips depend on the positions
-// only, never on the thread count, so the result is the same for any count.
-// Each thread counts and then places the rows it found; a strip takes the
-// rows of thread 0 first, then thread 1's, ...: key order, since thread t
-// found the rows of the t-th range of balls.
-void ScaleSolver::partition(const ScaleBodies& s, ThreadPool& pool) {
-  const std::size_t n = s.position.size();
-  const int strips = std::clamp(gridCols_ / kStripColumns, 1, kMaxStrips);
-  const int threads = pool.size();
-  const std::size_t width = static_cast<std::size_t>(strips) + 1;
-  stripOf_.resize(n);
-  // Each thread's counters on cache lines of their own (16 ints = 64 bytes).
-  const std::size_t stride = (width + 15) / 16 * 16;
-  stripCount_.assign(static_cast<std::size_t>(threads) * stride, 0);
-  std::vector<std::size_t> offset(static_cast<std::size_t>(threads) + 1, 0);
-  for (int t = 0; t < threads; ++t)
-    offset[static_cast<std::size_t>(t) + 1] =
-        offset[static_cast<std::size_t>(t)] + found_[static_cast<std::size_t>(t)].rows.size();
-  slot_.resize(offset.back());
-  rows_.resize(offset.back());
-  pairs_.resize(offset.back());
-  stripStart_.assign(width, 0);
-  pool.run([&](int t) {
-    const auto [b, e] = part(n, t, threads);
-    // Whole grid columns per strip: neighbours are at most one column apart.
-    for (std::size_t i = b; i < e; ++i)
-      stripOf_[i] = (ballCell_[i] % gridCols_) * strips / gridCols_;
-    pool.sync();
-    const std::vector<Row>& mine = found_[static_cast<std::size_t>(t)].rows;
-    int* count = stripCount_.data() + static_cast<std::size_t>(t) * stride;
-    int* slot = slot_.data() + offset[static_cast<std::size_t>(t)];
-    for (std::size_t k = 0; k < mine.size(); ++k) {
-      const Row& r = mine[k];
-      const int sa = stripOf_[static_cast<std::size_t>(r.a)];
-      const int st = r.b >= 0 ? std::min(sa, stripOf_[static_cast<std::size_t>(r.b)]) : sa;
-      slot[k] = st;
-      ++count[st];
     }
     pool.sync();
     if (t == 0) {
+      for (int u = 0; u < threads; ++u)
+        offset[static_cast<std::size_t>(u) + 1] =
+            offset[static_cast<std::size_t>(u)] + found_[static_cast<std::size_t>(u)].links.size();
+      slot_.resize(offset.back());
+      rows_.resize(offset.back());
+      pairs_.resize(offset.back());
       // Where each thread's rows of each strip start: strip by strip, thread
-      // by thread.
+      // by thread, so that a strip's rows are in key order (thread t has the
+      // t-th range of balls).
       int at = 0;
       for (int st = 0; st < strips; ++st) {
         stripStart_[static_cast<std::size_t>(st)] = at;
@@ -451,10 +419,50 @@ void ScaleSolver::partition(const ScaleBodies& s, ThreadPool& pool) {
       stripStart_[static_cast<std::size_t>(strips)] = at;
     }
     pool.sync();
-    for (std::size_t k = 0; k < mine.size(); ++k) {
-      const int pos = count[slot[k]]++;
-      rows_[static_cast<std::size_t>(pos)] = mine[k];
-      pairs_[static_cast<std::size_t>(pos)] = {mine[k].a, mine[k].b, mine[k].reach};
+
+    // The last step's impulses are sorted by key, as these rows are made.
+    auto last =
+        std::lower_bound(lastKey_.begin(), lastKey_.end(), static_cast<std::uint64_t>(begin) << 32);
+    int* slot = slot_.data() + offset[static_cast<std::size_t>(t)];
+    for (std::size_t k = 0; k < links.size(); ++k) {
+      const int a = links[k].a, b = links[k].b;
+      const std::size_t ia = static_cast<std::size_t>(a);
+      Row r;
+      r.a = a;
+      r.b = b;
+      double dist = 0.0;
+      ContactMaterial m;
+      if (b >= 0) {
+        const Vec2 d = s.position[static_cast<std::size_t>(b)] - s.position[ia];
+        r.reach = s.radius[ia] + s.radius[static_cast<std::size_t>(b)];
+        dist = std::sqrt(d.squaredNorm());
+        r.normal = dist > 0.0 ? Vec2(d / dist) : Vec2(1.0, 0.0);
+        m = mixMaterials(s.material[ia], s.material[static_cast<std::size_t>(b)]);
+      } else {
+        const std::size_t w = static_cast<std::size_t>(-1 - b);
+        WallHit hit;
+        nearWall(s.position[ia], s.radius[ia] + margin, s.walls[w], hit);
+        r.reach = s.radius[ia];
+        dist = s.radius[ia] + margin - hit.overlap;
+        r.normal = hit.normal;
+        m = mixMaterials(s.material[ia], s.wallMaterial[w]);
+      }
+      fillRow(s, m, dist, r);
+      const std::uint64_t other =
+          b >= 0 ? static_cast<std::uint64_t>(b) : wallBase + static_cast<std::uint64_t>(-1 - b);
+      r.key = (static_cast<std::uint64_t>(a) << 32) | other;
+      // Warm start from the last step's row with the same key, if any.
+      while (last != lastKey_.end() && *last < r.key) ++last;
+      if (last != lastKey_.end() && *last == r.key) {
+        const std::size_t j = static_cast<std::size_t>(last - lastKey_.begin());
+        r.lambdaN = lastN_[j];
+        r.lambdaT = lastT_[j];
+      }
+      const int st =
+          b >= 0 ? std::min(stripOf_[ia], stripOf_[static_cast<std::size_t>(b)]) : stripOf_[ia];
+      const int pos = count[st]++;
+      rows_[static_cast<std::size_t>(pos)] = r;
+      pairs_[static_cast<std::size_t>(pos)] = {a, b, r.reach};
       slot[k] = pos;
     }
   });
@@ -470,7 +478,6 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
   ThreadPool& pool = pool_.get(parallel ? std::max(1, settings.threads) : 1);
   const int threads = pool.size();
   findRows(s, pool);
-  partition(s, pool);
 
   const int iterations = std::max(1, settings.scaleVelocityIterations);
   const int passes = std::max(1, settings.scalePositionPasses);

@@ -92,16 +92,20 @@ class ScaleSolver {
 
  private:
   void findRows(const ScaleBodies& bodies, ThreadPool& pool);
-  void partition(const ScaleBodies& bodies, ThreadPool& pool);
 
-  // Rows of this step in key order, one list per thread (each thread fills
-  // its own range of balls). Each list on its own cache line: side by side,
-  // every push_back of one thread evicted the other's vector (measured: the
-  // pair search of two threads took 0.73 + 0.69 s where one thread took 0.87).
-  struct alignas(64) ThreadRows {
-    std::vector<Row> rows;
+  // This step's pairs (ball, ball or wall) in key order, one list per thread
+  // (each thread takes its own range of balls). Each list on its own cache
+  // line: side by side, every push_back of one thread evicted the other's
+  // vector (measured: the pair search of two threads took 0.73 + 0.69 s where
+  // one thread took 0.87).
+  struct Link {
+    int a = 0;
+    int b = 0;  // ball index, or -1 - wall index
   };
-  std::vector<ThreadRows> found_;
+  struct alignas(64) ThreadLinks {
+    std::vector<Link> links;
+  };
+  std::vector<ThreadLinks> found_;
   std::vector<Row> rows_;        // in solve order: by strip, then key
   std::vector<Pair> pairs_;      // rows_'s balls and reach, in the same order
   std::vector<int> stripStart_;  // rows_ of strip k: [stripStart_[k], stripStart_[k+1])
