@@ -9,14 +9,22 @@
 namespace particles {
 namespace {
 
-// How long a wait polls before it goes to sleep. A sleeping thread takes
-// tens of microseconds to wake on this project's 2-core VM, and the pile's
-// threads wait for each other at every barrier (a few per step, each after
-// ~0.1 ms of work): with 2,000 pauses (20-60 us, depending on the processor)
-// the faster thread fell asleep and the slower one then waited for it to wake
-// (0.16-0.23 s of 600 steps at N = 10,000; measured in docs/scale.md). A
-// thread that has to wait longer (a whole step, or threads > cores) sleeps.
-constexpr std::chrono::microseconds kSpinTime{200};
+// How long a wait polls before it goes to sleep (std::atomic::wait, a
+// futex). Waking a sleeping thread takes tens of microseconds on this
+// project's 2-core VM, and a notify that finds a sleeper costs a system call.
+// Measured on the 10,000-ball pile with two threads (docs/scale.md):
+// - at a barrier (sync; a step has a few dozen, each after ~0.1 ms of work)
+//   2,000 pauses let the faster thread fall asleep, and the slower one then
+//   waited for it to wake at the next barrier. 50 us by the clock keeps the
+//   waits short; 200 us gained nothing more and made the test suite, which
+//   runs two 2-thread tests on 2 cores, 4 s (17 %) slower;
+// - a worker waiting for the next job (run) waits through the serial part
+//   of a step (~0.2 ms at 10,000 balls): 1 ms of polling keeps it awake from
+//   step to step (+9-13 % at 10,000 balls, two threads) and costs the test
+//   suite nothing measurable.
+// A thread that waits longer (no more steps, or threads > cores) sleeps.
+constexpr std::chrono::microseconds kSyncSpin{50};
+constexpr std::chrono::microseconds kJobSpin{1000};
 
 inline void relax() {
 #if defined(__x86_64__) || defined(__i386__)
@@ -29,8 +37,8 @@ inline void relax() {
 // Waits until `value` is no longer `old`: polls, then sleeps in
 // std::atomic::wait (a futex on Linux).
 template <class T>
-void waitWhileEqual(const std::atomic<T>& value, T old) {
-  const auto until = std::chrono::steady_clock::now() + kSpinTime;
+void waitWhileEqual(const std::atomic<T>& value, T old, std::chrono::microseconds spin) {
+  const auto until = std::chrono::steady_clock::now() + spin;
   for (unsigned i = 1;; ++i) {
     if (value.load(std::memory_order_acquire) != old) return;
     relax();
@@ -65,7 +73,7 @@ void ThreadPool::run(const std::function<void(int)>& job) {
   job(0);
   for (int left = running_.load(std::memory_order_acquire); left != 0;
        left = running_.load(std::memory_order_acquire))
-    waitWhileEqual(running_, left);
+    waitWhileEqual(running_, left, kSyncSpin);
   job_ = nullptr;
 }
 
@@ -82,13 +90,13 @@ void ThreadPool::sync() {
     phase_.notify_all();
     return;
   }
-  waitWhileEqual(phase_, phase);
+  waitWhileEqual(phase_, phase, kSyncSpin);
 }
 
 void ThreadPool::work(int index) {
   long long seen = 0;
   for (;;) {
-    waitWhileEqual(generation_, seen);
+    waitWhileEqual(generation_, seen, kJobSpin);
     seen = generation_.load(std::memory_order_acquire);
     if (stop_.load(std::memory_order_relaxed)) return;
     (*job_)(index);
