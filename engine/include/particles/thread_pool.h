@@ -28,10 +28,11 @@ class ThreadPool {
   void work(int index);
 
   int size_;
-  // Every wait below spins for a few tens of microseconds before it sleeps:
-  // a step of the 10,000-ball pile has about 30 barriers, and waking a
-  // sleeping thread costs more than the work between two of them
-  // (docs/scale.md, "Threads that wait by spinning").
+  // Every wait below polls before it sleeps (50 us at a barrier, 1 ms for the
+  // next job; thread_pool.cpp says why): a step of the 10,000-ball pile has
+  // about 30 barriers, and waking a sleeping thread costs more than the work
+  // between two of them (docs/scale.md, "Waits that spin" and the night
+  // session).
   std::atomic<int> arrived_{0};           // threads at the current barrier
   std::atomic<unsigned> phase_{0};        // barriers completed
   std::atomic<long long> generation_{0};  // jobs started
