@@ -104,7 +104,7 @@ inline void fillRow(const ScaleBodies& s, const ContactMaterial& m, double dist,
 
 // The grid: cells as wide as the largest diameter plus the margin, balls
 // counting-sorted into them (in index order within a cell).
-void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
+ScaleSolver::Grid ScaleSolver::buildGrid(const ScaleBodies& s) {
   const std::size_t n = s.position.size();
   Vec2 lo = s.position[0], hi = s.position[0];
   double maxRadius = 0.0;
@@ -153,6 +153,12 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
     cellBalls_[k] = {s.position[i], s.radius[i], static_cast<int>(i)};
   }
   gridCols_ = cols;
+  return {cols, rows, margin};
+}
+
+void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
+  const std::size_t n = s.position.size();
+  const auto [cols, rows, margin] = buildGrid(s);
 
   // Rows are split into vertical strips of kStripColumns grid columns, so a
   // row joins balls of the same or of neighbouring strips; a row belongs to

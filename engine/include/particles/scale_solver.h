@@ -91,6 +91,13 @@ class ScaleSolver {
   };
 
  private:
+  // This step's grid: its columns and rows, and the contact margin (m).
+  struct Grid {
+    int cols = 1;
+    int rows = 1;
+    double margin = 0.0;
+  };
+  Grid buildGrid(const ScaleBodies& bodies);
   void findRows(const ScaleBodies& bodies, ThreadPool& pool);
 
   // This step's pairs (ball, ball or wall) in key order, one list per thread
