@@ -62,7 +62,7 @@ TEST(ExampleScenes, TheListedOnesExist) {
   for (const char* name :
        {"oblique_floor_hit", "free_flight", "projectile", "head_on_spinning", "gears",
         "ball_in_box", "newtons_cradle", "pull_drag", "constant_force_torque", "rolling_disk",
-        "density_and_inertia", "no_slip_walls"})
+        "density_and_inertia", "no_slip_walls", "small_pile"})
     EXPECT_TRUE(std::filesystem::exists(sceneFile(std::string(name) + ".json"))) << name;
 }
 
@@ -168,6 +168,32 @@ TEST(HandChecked, ConstantForceAndTorque) {
   const double angle =
       1.0 * dt * dt * n * (n + 1) / 2 + w1 * n * dt - 0.5 * dt * dt * n * (n + 1) / 2;
   EXPECT_NEAR(ball["angle"].get<double>(), angle, 1e-12);  // 0.312625 rad
+}
+
+// 48 balls dropped into a box (on the large-scene path: 32 or more balls
+// under gravity) end at rest, inside the box and without overlap: every
+// point of every ball moves slower than 1 cm/s (the pile benchmark's rest
+// speed, docs/scale.md), no ball crosses a wall, and no two overlap by more
+// than 1e-6 of the smaller radius.
+TEST(HandChecked, SmallPileComesToRestInsideTheBox) {
+  const SceneDef scene = loadScene(sceneFile("small_pile.json"));
+  const nlohmann::json balls = runScene("small_pile.json")["balls"];
+  ASSERT_EQ(balls.size(), scene.balls.size());
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    const double r = scene.balls[i].radius;
+    const Vec2 x = vec(balls[i]["position"]);
+    EXPECT_LT(vec(balls[i]["velocity"]).norm(), 0.01) << i;
+    EXPECT_LT(std::abs(balls[i]["angular_velocity"].get<double>()) * r, 0.01) << i;
+    EXPECT_GE(x.x() - r, -1e-9 * r) << i;
+    EXPECT_GE(x.y() - r, -1e-9 * r) << i;
+    EXPECT_LE(x.x() + r, 5.6 + 1e-9 * r) << i;
+    EXPECT_LE(x.y() + r, 6.0 + 1e-9 * r) << i;
+    for (std::size_t j = i + 1; j < balls.size(); ++j) {
+      const double rj = scene.balls[j].radius;
+      const double gap = (vec(balls[j]["position"]) - x).norm() - (r + rj);
+      EXPECT_GT(gap, -1e-6 * std::min(r, rj)) << i << " " << j;
+    }
+  }
 }
 
 }  // namespace
