@@ -152,7 +152,6 @@ ScaleSolver::Grid ScaleSolver::buildGrid(const ScaleBodies& s) {
     const std::size_t k = static_cast<std::size_t>(next[static_cast<std::size_t>(ballCell_[i])]++);
     cellBalls_[k] = {s.position[i], s.radius[i], static_cast<int>(i)};
   }
-  gridCols_ = cols;
   return {cols, rows, margin};
 }
 

@@ -126,7 +126,6 @@ class ScaleSolver {
   // Grid (counting sort of balls into cells).
   std::vector<int> cellStart_, ballCell_;
   std::vector<CellBall> cellBalls_;  // the balls in cell order
-  int gridCols_ = 0;                 // columns of this step's grid
   PoolHandle pool_;
 };
 
