@@ -122,9 +122,14 @@ inline void restituteRow(ScaleSolver::Motion* m, ScaleSolver::Row& r) {
 }
 
 // Moves a row's bodies apart by their whole overlap, shared by inverse mass
-// (a wall takes none): the small-scene projection of world.cpp, per row,
-// except that under gravity the lower ball's share is scaled by
-// 1 - shock |n . down| (SolverSettings::scaleShockPropagation).
+// (a wall takes none): the small-scene projection of world.cpp, per row.
+// Under gravity with shock propagation (SolverSettings::scaleShockPropagation)
+// the part of the move along gravity is shared with the lower ball's weight
+// scaled by 1 - shock |n . down|; the part across gravity is still shared by
+// inverse mass. Scaling the whole move instead pushed upper balls sideways
+// more than their lower partners: the pair's centre shifted sideways on every
+// pass, and shallow piles crept for ever instead of coming to rest
+// (docs/scale.md, "Shock propagation").
 // Returns the overlap found (m, <= 0 when apart).
 inline double projectRow(const ScaleBodies& s, const ScaleSolver::Pair& r, double shock) {
   const int a = r.a;
@@ -146,15 +151,20 @@ inline double projectRow(const ScaleBodies& s, const ScaleSolver::Pair& r, doubl
   const double overlap = r.reach - dist;
   if (overlap <= kOverlapTolerance * r.reach) return overlap;
   const Vec2 n = dist > 0.0 ? Vec2(d / dist) : Vec2(1.0, 0.0);
-  double wa = s.invMass[a], wb = s.invMass[b];
+  const double wa = s.invMass[a], wb = s.invMass[b];
   if (shock > 0.0) {
     const double below = n.dot(s.down);  // > 0: b lies below a
     const double lowA = wa * (1.0 + shock * std::min(0.0, below));
     const double lowB = wb * (1.0 - shock * std::max(0.0, below));
-    // An immovable upper ball on a movable lower one: the lower one moves.
+    // An immovable upper ball on a movable lower one (lowA + lowB = 0): the
+    // lower one moves, by the plain share below.
     if (lowA + lowB > 0.0) {
-      wa = lowA;
-      wb = lowB;
+      const Vec2 along = (overlap * below) * s.down;  // the move along gravity
+      const Vec2 across = overlap * n - along;
+      const double even = 1.0 / (wa + wb), low = 1.0 / (lowA + lowB);
+      s.position[a] -= (wa * even) * across + (lowA * low) * along;
+      s.position[b] += (wb * even) * across + (lowB * low) * along;
+      return overlap;
     }
   }
   const double share = overlap / (wa + wb);

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "particles/world.h"
 
@@ -67,6 +68,43 @@ TEST(ScaleShock, FullShockClearsAStackInOnePass) {
   w.step();
   EXPECT_NEAR(w.ball(0).position.y(), kRadius, 1e-12);
   EXPECT_NEAR(w.ball(1).position.y(), 3.0 * kRadius, 1e-12);
+}
+
+// A slanted pair floating under the same weak gravity: ball 1 lies below
+// and to the right of ball 0, along n = (cos t, -sin t) with t = 30 degrees,
+// overlapping by d. Only the move along gravity, d sin t, is shared with the
+// lower ball weighted 1 - k sin t: ball 0 rises d sin t / (2 - k sin t) and
+// ball 1 sinks d sin t (1 - k sin t) / (2 - k sin t). The move across
+// gravity, d cos t, is shared evenly (equal masses), so the pair's centre
+// does not shift sideways, and one pass leaves the two exactly touching.
+TEST(ScaleShock, OnlyTheMoveAlongGravityIsSharedUnevenly) {
+  const double t = std::numbers::pi / 6.0, c = std::cos(t), sn = std::sin(t);
+  const double reach = 2.0 * kRadius;
+  for (const double k : {0.0, 0.7, 1.0}) {
+    SceneDef s;
+    s.dt = 1e-3;
+    s.gravity = {0.0, -1e-9};
+    s.contact = {0.0, 0.5};
+    BallDef upper = restingBall(5.0), lower = restingBall(5.0);
+    lower.position = upper.position + (reach - kOverlap) * Vec2(c, -sn);
+    s.balls = {upper, lower};
+    s.solver.scaleThreshold = 0;
+    s.solver.scaleThresholdUnderGravity = 0;
+    s.solver.scalePositionPasses = 1;
+    s.solver.scaleShockPropagation = k;
+    World w(s);
+    ASSERT_TRUE(w.plan().scale);
+    w.step();
+    SCOPED_TRACE(testing::Message() << "k = " << k);
+    const Vec2 up = w.ball(0).position, low = w.ball(1).position;
+    EXPECT_NEAR(up.x(), upper.position.x() - 0.5 * kOverlap * c, 1e-12);
+    EXPECT_NEAR(low.x(), lower.position.x() + 0.5 * kOverlap * c, 1e-12);
+    EXPECT_NEAR(up.x() + low.x(), upper.position.x() + lower.position.x(), 1e-12);
+    EXPECT_NEAR(up.y(), upper.position.y() + kOverlap * sn / (2.0 - k * sn), 1e-12);
+    EXPECT_NEAR(low.y(), lower.position.y() - kOverlap * sn * (1.0 - k * sn) / (2.0 - k * sn),
+                1e-12);
+    EXPECT_NEAR((low - up).norm(), reach, 1e-12);
+  }
 }
 
 // Without gravity there is no "lower" ball: the overlap is shared by inverse
