@@ -16,9 +16,9 @@
 namespace particles::cli {
 namespace {
 
-constexpr std::array<std::string_view, 9> kScaleOnly{
+constexpr std::array<std::string_view, 10> kScaleOnly{
     "--n",          "--threads",         "--poly",  "--steps", "--no-box2d",
-    "--iterations", "--position-passes", "--shock", "--seed"};
+    "--iterations", "--position-passes", "--shock", "--seed",  "--seeds"};
 constexpr std::array<std::string_view, 6> kTimestepOnly{
     "--repeats", "--full", "--scene", "--skip-csv", "--no-skip-study", "--report"};
 

@@ -28,6 +28,7 @@ constexpr long long kLastSteps = 60;  // kinetic energy window at the end
 
 struct RunFigures {
   std::string engine;  // "engine" or "box2d"
+  std::uint64_t seed = 0;
   int count = 0;
   int threads = 1;
   long long steps = 0;
@@ -105,9 +106,9 @@ std::string general(double v) {
 
 void printTable(const std::vector<RunFigures>& rows,
                 const std::vector<std::optional<RunFigures>>& ref) {
-  std::printf("%-7s %8s %3s %6s %10s %10s %10s %8s %8s %12s %6s %7s %8s %8s\n", "engine", "N", "T",
-              "steps", "ms 0-299", "ms 300+", "Mdisk-st/s", "ovl max", "ovl mean", "KE last60",
-              "rest", "B/ball", "x Box2D", "ovl/B2D");
+  std::printf("%-7s %8s %3s %6s %10s %10s %10s %8s %8s %12s %6s %7s %8s %8s %10s\n", "engine", "N",
+              "T", "steps", "ms 0-299", "ms 300+", "Mdisk-st/s", "ovl max", "ovl mean", "KE last60",
+              "rest", "B/ball", "x Box2D", "ovl/B2D", "seed");
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const RunFigures& r = rows[i];
     const bool engine = r.engine == "engine";
@@ -116,14 +117,14 @@ void printTable(const std::vector<RunFigures>& rows,
       timeRatio = r.diskStepsPerSecond / ref[i]->diskStepsPerSecond;
       overlapRatio = r.overlap.max / ref[i]->overlap.max;
     }
-    std::printf("%-7s %8d %3d %6lld %10s %10s %10s %7s%% %7s%% %12s %6s %7s %8s %8s\n",
-                r.engine.c_str(), r.count, r.threads, r.steps, fixed(r.msFalling, 2).c_str(),
-                fixed(r.msSettled, 2).c_str(), fixed(r.diskStepsPerSecond / 1e6, 3).c_str(),
-                fixed(100.0 * r.overlap.max, 2).c_str(), fixed(100.0 * r.overlap.mean, 3).c_str(),
-                general(r.keLastMean).c_str(),
-                r.restStep ? std::to_string(*r.restStep).c_str() : "no",
-                r.bytesPerBall ? fixed(*r.bytesPerBall, 0).c_str() : "-",
-                fixed(timeRatio, 2).c_str(), fixed(overlapRatio, 2).c_str());
+    std::printf(
+        "%-7s %8d %3d %6lld %10s %10s %10s %7s%% %7s%% %12s %6s %7s %8s %8s %10llu\n",
+        r.engine.c_str(), r.count, r.threads, r.steps, fixed(r.msFalling, 2).c_str(),
+        fixed(r.msSettled, 2).c_str(), fixed(r.diskStepsPerSecond / 1e6, 3).c_str(),
+        fixed(100.0 * r.overlap.max, 2).c_str(), fixed(100.0 * r.overlap.mean, 3).c_str(),
+        general(r.keLastMean).c_str(), r.restStep ? std::to_string(*r.restStep).c_str() : "no",
+        r.bytesPerBall ? fixed(*r.bytesPerBall, 0).c_str() : "-", fixed(timeRatio, 2).c_str(),
+        fixed(overlapRatio, 2).c_str(), static_cast<unsigned long long>(r.seed));
   }
   std::printf(
       "ms: mean wall time per step; KE last60: mean kinetic energy (J) over the last 60 "
@@ -133,12 +134,61 @@ void printTable(const std::vector<RunFigures>& rows,
       pile::kRestSpeed);
 }
 
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t h = v.size() / 2;
+  return v.size() % 2 == 1 ? v[h] : 0.5 * (v[h - 1] + v[h]);
+}
+
+// With several seeds, one line per engine, N and thread count over its
+// seeds: one run of a pile that is still settling is one sample of a chaotic
+// system, so its largest overlap and its energy are judged by their mean and
+// their worst (docs/scale.md).
+void printSeedSummary(const std::vector<RunFigures>& rows,
+                      const std::vector<std::optional<RunFigures>>& ref, int seeds) {
+  std::printf("\nover %d seeds:\n%-7s %8s %3s %10s %9s %9s %9s %12s %7s %8s\n", seeds, "engine",
+              "N", "T", "Mdisk-st/s", "max mean", "max worst", "ovl mean", "KE last60", "at rest",
+              "x Box2D");
+  std::vector<bool> done(rows.size(), false);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (done[i]) continue;
+    std::vector<double> speed, ratio;
+    double maxSum = 0.0, maxWorst = 0.0, meanSum = 0.0, energySum = 0.0;
+    int runs = 0, resting = 0;
+    for (std::size_t j = i; j < rows.size(); ++j) {
+      const RunFigures& r = rows[j];
+      if (r.engine != rows[i].engine || r.count != rows[i].count || r.threads != rows[i].threads)
+        continue;
+      done[j] = true;
+      ++runs;
+      speed.push_back(r.diskStepsPerSecond);
+      if (r.engine == "engine" && ref[j])
+        ratio.push_back(r.diskStepsPerSecond / ref[j]->diskStepsPerSecond);
+      maxSum += r.overlap.max;
+      maxWorst = std::max(maxWorst, r.overlap.max);
+      meanSum += r.overlap.mean;
+      energySum += r.keLastMean;
+      if (r.restStep) ++resting;
+    }
+    const RunFigures& r = rows[i];
+    std::printf("%-7s %8d %3d %10s %8s%% %8s%% %8s%% %12s %4d/%-2d %8s\n", r.engine.c_str(),
+                r.count, r.threads, fixed(median(speed) / 1e6, 3).c_str(),
+                fixed(100.0 * maxSum / runs, 2).c_str(), fixed(100.0 * maxWorst, 2).c_str(),
+                fixed(100.0 * meanSum / runs, 3).c_str(), general(energySum / runs).c_str(),
+                resting, runs, ratio.empty() ? "-" : fixed(median(ratio), 2).c_str());
+  }
+  std::printf(
+      "Mdisk-st/s and x Box2D: medians over the seeds (x Box2D of each seed's own Box2D run); "
+      "max mean / max worst: mean and largest of the runs' max overlaps; ovl mean and KE "
+      "last60: means over the seeds; at rest: runs at rest at the end\n");
+}
+
 void writeCsv(std::ostream& out, const std::vector<RunFigures>& rows,
               const std::vector<std::optional<RunFigures>>& ref, bool poly) {
   out << "engine,n,polydisperse,threads,steps,ms_per_step_0_299,ms_per_step_300_599,"
          "disk_steps_per_s,overlap_max_fraction,overlap_mean_fraction,touching_pairs,"
          "ke_last60_mean_J,ke_last60_max_J,ke_final_J,rest_energy_J,rest_step,bytes_per_ball,"
-         "speed_ratio_engine_over_box2d,overlap_max_ratio_engine_over_box2d\n";
+         "speed_ratio_engine_over_box2d,overlap_max_ratio_engine_over_box2d,seed\n";
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const RunFigures& r = rows[i];
     const bool withRef = r.engine == "engine" && ref[i].has_value();
@@ -150,7 +200,7 @@ void writeCsv(std::ostream& out, const std::vector<RunFigures>& rows,
         << ',' << (r.restStep ? std::to_string(*r.restStep) : "") << ','
         << (r.bytesPerBall ? general(*r.bytesPerBall) : "") << ','
         << (withRef ? general(r.diskStepsPerSecond / ref[i]->diskStepsPerSecond) : "") << ','
-        << (withRef ? general(r.overlap.max / ref[i]->overlap.max) : "") << '\n';
+        << (withRef ? general(r.overlap.max / ref[i]->overlap.max) : "") << ',' << r.seed << '\n';
   }
 }
 
@@ -198,6 +248,12 @@ void addScaleBenchOptions(CLI::App& bench, ScaleBenchOptions& o) {
   bench.add_option("--seed", o.seed, "Seed of the grid's jitter and radii (default 20261201)")
       ->type_name("SEED")
       ->check(unsigned64());
+  bench
+      .add_option("--seeds", o.seeds,
+                  "Runs per N with seeds SEED, SEED+1, ... (default 1); with more than one, a "
+                  "summary over the seeds follows the table")
+      ->type_name("K")
+      ->check(integerInRange(1, 1000));
 }
 
 int runScaleBench(const ScaleBenchOptions& o) {
@@ -212,42 +268,49 @@ int runScaleBench(const ScaleBenchOptions& o) {
   std::vector<RunFigures> rows;
   std::vector<std::optional<RunFigures>> ref;  // the Box2D run of each row's N
   for (const int n : o.counts) {
-    pile::PileParams params;
-    params.count = n;
-    params.polydisperse = o.polydisperse;
-    params.seed = o.seed;
-    std::optional<RunFigures> box2d;
-    if (!o.noBox2D) {
-      const SceneDef scene = pile::makePile(params);
-      reference::Box2DSettings settings = reference::Box2DSettings::forScene(scene);
-      settings.velocityIterations = 8;
-      settings.positionIterations = 3;
-      reference::Box2DWorld world(scene, settings);
-      box2d = measure(world, scene, o.steps);
-      box2d->engine = "box2d";
-      std::fprintf(stderr, "particles: bench: box2d N=%d done\n", n);
-    }
-    for (const int t : o.threads) {
-      params.threads = t;
-      SceneDef scene = pile::makePile(params);
-      if (o.iterations > 0) scene.solver.scaleVelocityIterations = o.iterations;
-      if (o.positionPasses > 0) scene.solver.scalePositionPasses = o.positionPasses;
-      if (o.shock >= 0.0) scene.solver.scaleShockPropagation = o.shock;
-      World world(scene);
-      RunFigures f = measure(world, scene, o.steps);
-      f.engine = "engine";
-      f.threads = t;
-      f.bytesPerBall = static_cast<double>(world.memoryBytes()) / n;
-      std::fprintf(stderr, "particles: bench: engine N=%d T=%d done\n", n, t);
-      rows.push_back(f);
-      ref.push_back(box2d);
-    }
-    if (box2d) {
-      rows.push_back(*box2d);
-      ref.push_back(box2d);
+    for (int k = 0; k < o.seeds; ++k) {
+      pile::PileParams params;
+      params.count = n;
+      params.polydisperse = o.polydisperse;
+      params.seed = o.seed + static_cast<std::uint64_t>(k);
+      std::optional<RunFigures> box2d;
+      if (!o.noBox2D) {
+        const SceneDef scene = pile::makePile(params);
+        reference::Box2DSettings settings = reference::Box2DSettings::forScene(scene);
+        settings.velocityIterations = 8;
+        settings.positionIterations = 3;
+        reference::Box2DWorld world(scene, settings);
+        box2d = measure(world, scene, o.steps);
+        box2d->engine = "box2d";
+        box2d->seed = params.seed;
+        std::fprintf(stderr, "particles: bench: box2d N=%d seed %llu done\n", n,
+                     static_cast<unsigned long long>(params.seed));
+      }
+      for (const int t : o.threads) {
+        params.threads = t;
+        SceneDef scene = pile::makePile(params);
+        if (o.iterations > 0) scene.solver.scaleVelocityIterations = o.iterations;
+        if (o.positionPasses > 0) scene.solver.scalePositionPasses = o.positionPasses;
+        if (o.shock >= 0.0) scene.solver.scaleShockPropagation = o.shock;
+        World world(scene);
+        RunFigures f = measure(world, scene, o.steps);
+        f.engine = "engine";
+        f.seed = params.seed;
+        f.threads = t;
+        f.bytesPerBall = static_cast<double>(world.memoryBytes()) / n;
+        std::fprintf(stderr, "particles: bench: engine N=%d T=%d seed %llu done\n", n, t,
+                     static_cast<unsigned long long>(params.seed));
+        rows.push_back(f);
+        ref.push_back(box2d);
+      }
+      if (box2d) {
+        rows.push_back(*box2d);
+        ref.push_back(box2d);
+      }
     }
   }
   printTable(rows, ref);
+  if (o.seeds > 1) printSeedSummary(rows, ref, o.seeds);
   bool finite = true;
   for (const RunFigures& r : rows) finite = finite && r.finite;
   if (csv.is_open()) {

@@ -22,9 +22,10 @@ struct ScaleBenchOptions {
   bool noBox2D = false;                  // --no-box2d: engine only
   std::string csv = "pile.csv";          // --csv: where the CSV goes ("" = none)
   std::uint64_t seed = 20261201;         // --seed: the grid's jitter and radii
+  int seeds = 1;  // --seeds: runs per N with seeds seed, seed + 1, ... (a settling pile is chaotic)
   int iterations = 0;      // --iterations: SolverSettings::scaleVelocityIterations (0 = default)
   int positionPasses = 0;  // --position-passes: SolverSettings::scalePositionPasses (0 = default)
-  double shock = -1.0;  // --shock: SolverSettings::scaleShockPropagation (< 0 = default)
+  double shock = -1.0;     // --shock: SolverSettings::scaleShockPropagation (< 0 = default)
 };
 
 // Registers the options above on the `bench` subcommand.

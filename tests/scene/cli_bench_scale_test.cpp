@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <string>
+#include <vector>
 
 #include "cli_support.h"
 
@@ -27,6 +29,8 @@ TEST(CliBenchScale, BadArgumentsAreExitTwo) {
   expectBadInput("bench --scale --shock nan --csv ''", "--shock");
   expectBadInput("bench --scale --shock 1.5 --csv ''", "--shock");
   expectBadInput("bench --scale --shock inf --csv ''", "--shock");
+  expectBadInput("bench --scale --seeds 0 --csv ''", "--seeds");
+  expectBadInput("bench --scale --seeds two --csv ''", "--seeds");
 }
 
 // Without --scale, bench is the catalogue benchmark: an option of the pile's
@@ -35,6 +39,7 @@ TEST(CliBenchScale, OptionsOfTheOtherBenchmarkAreExitTwo) {
   expectBadInput("bench --n 10", "--n needs --scale");
   expectBadInput("bench --threads 2", "--threads needs --scale");
   expectBadInput("bench --shock 0.5", "--shock needs --scale");
+  expectBadInput("bench --seeds 3", "--seeds needs --scale");
   expectBadInput("bench --scale --n 10 --full", "--full is an option of the catalogue benchmark");
 }
 
@@ -55,6 +60,50 @@ TEST(CliBenchScale, TinyRunWritesTableAndCsv) {
   EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 4) << text;  // header, T=1, T=2, box2d
   EXPECT_NE(text.find("\nengine,60,0,2,4,"), std::string::npos) << text;
   EXPECT_NE(text.find("\nbox2d,60,0,1,4,"), std::string::npos) << text;
+}
+
+// The CSV line of `engine` after the leading "engine," field, up to the
+// seed column (the timings differ from run to run; nothing else may).
+std::vector<std::string> figuresBySeed(const std::string& csv, const std::string& engine) {
+  std::vector<std::string> lines;
+  std::size_t at = 0;
+  while ((at = csv.find("\n" + engine + ",", at)) != std::string::npos) {
+    const std::size_t end = csv.find('\n', at + 1);
+    std::string line = csv.substr(at + 1, end == std::string::npos ? end : end - at - 1);
+    // Drop the three timing fields (ms 0-299, ms 300+, disk-steps/s).
+    std::vector<std::string> fields;
+    std::size_t from = 0, comma;
+    while ((comma = line.find(',', from)) != std::string::npos) {
+      fields.push_back(line.substr(from, comma - from));
+      from = comma + 1;
+    }
+    fields.push_back(line.substr(from));
+    std::string kept;
+    for (std::size_t i = 0; i < fields.size(); ++i)
+      if (i < 5 || i > 7) kept += fields[i] + ",";
+    lines.push_back(kept);
+    at = end == std::string::npos ? csv.size() : end;
+  }
+  return lines;
+}
+
+// --seeds 2 runs the seeds S and S + 1: the same figures, bit for bit, as two
+// runs with --seed S and --seed S + 1, and a summary over both.
+TEST(CliBenchScale, SeedsRunsConsecutiveSeedsAndSummarises) {
+  TempDir dir;
+  const std::string both = dir.file("both.csv").string(), second = dir.file("second.csv").string();
+  const std::string common = "bench --scale --n 60 --threads 1 --steps 20 --no-box2d --csv ";
+  const CliResult r = runCli(common + shellQuote(both) + " --seed 7 --seeds 2");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("over 2 seeds:"), std::string::npos) << r.out;
+  ASSERT_EQ(runCli(common + shellQuote(second) + " --seed 8").status, 0);
+  const std::vector<std::string> two = figuresBySeed(readFile(both), "engine");
+  const std::vector<std::string> one = figuresBySeed(readFile(second), "engine");
+  ASSERT_EQ(two.size(), 2u);
+  ASSERT_EQ(one.size(), 1u);
+  EXPECT_TRUE(two[0].ends_with(",7,")) << two[0];
+  EXPECT_EQ(two[1], one[0]);
+  EXPECT_NE(two[0], two[1]);  // another seed, another pile
 }
 
 }  // namespace

@@ -163,7 +163,9 @@ TEST(StressEngine, DensePilesComeToRestWithoutOverlap) {
 // were pushed sideways more than their partners and these piles crept for
 // ever (e = 0.5: 6e-4 J left after 4 s); with only the move along gravity
 // shared unevenly they come to rest (docs/scale.md, "Shock propagation").
-TEST(StressEngine, DensePilesComeToRestWithShockPropagation) { expectDensePilesComeToRest(0.7); }
+TEST(StressEngine, DensePilesComeToRestWithShockPropagation) {
+  expectDensePilesComeToRest(0.7);
+}
 
 }  // namespace
 }  // namespace particles::timestep
