@@ -16,9 +16,11 @@
 namespace particles::cli {
 namespace {
 
-constexpr std::array<std::string_view, 10> kScaleOnly{
-    "--n",          "--threads",         "--poly",  "--steps", "--no-box2d",
-    "--iterations", "--position-passes", "--shock", "--seed",  "--seeds"};
+// clang-format off
+constexpr std::array<std::string_view, 11> kScaleOnly{
+    "--n", "--threads", "--poly", "--steps", "--no-box2d", "--iterations", "--position-passes",
+    "--shock", "--seed", "--seeds", "--no-velocity-shock"};
+// clang-format on
 constexpr std::array<std::string_view, 6> kTimestepOnly{
     "--repeats", "--full", "--scene", "--skip-csv", "--no-skip-study", "--report"};
 

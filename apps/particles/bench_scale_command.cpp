@@ -245,6 +245,9 @@ void addScaleBenchOptions(CLI::App& bench, ScaleBenchOptions& o) {
                   "SolverSettings::scaleShockPropagation, 0: share by inverse mass)")
       ->type_name("K")
       ->check(finiteInRange(0.0, 1.0));
+  bench.add_flag("--no-velocity-shock", o.noVelocityShock,
+                 "Engine without shock propagation in velocities (SolverSettings::"
+                 "scaleVelocityShock, on by default)");
   bench.add_option("--seed", o.seed, "Seed of the grid's jitter and radii (default 20261201)")
       ->type_name("SEED")
       ->check(unsigned64());
@@ -292,6 +295,7 @@ int runScaleBench(const ScaleBenchOptions& o) {
         if (o.iterations > 0) scene.solver.scaleVelocityIterations = o.iterations;
         if (o.positionPasses > 0) scene.solver.scalePositionPasses = o.positionPasses;
         if (o.shock >= 0.0) scene.solver.scaleShockPropagation = o.shock;
+        if (o.noVelocityShock) scene.solver.scaleVelocityShock = false;
         World world(scene);
         RunFigures f = measure(world, scene, o.steps);
         f.engine = "engine";

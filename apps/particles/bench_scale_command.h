@@ -26,6 +26,7 @@ struct ScaleBenchOptions {
   int iterations = 0;      // --iterations: SolverSettings::scaleVelocityIterations (0 = default)
   int positionPasses = 0;  // --position-passes: SolverSettings::scalePositionPasses (0 = default)
   double shock = -1.0;     // --shock: SolverSettings::scaleShockPropagation (< 0 = default)
+  bool noVelocityShock = false;  // --no-velocity-shock: SolverSettings::scaleVelocityShock off
 };
 
 // Registers the options above on the `bench` subcommand.

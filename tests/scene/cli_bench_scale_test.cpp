@@ -40,6 +40,7 @@ TEST(CliBenchScale, OptionsOfTheOtherBenchmarkAreExitTwo) {
   expectBadInput("bench --threads 2", "--threads needs --scale");
   expectBadInput("bench --shock 0.5", "--shock needs --scale");
   expectBadInput("bench --seeds 3", "--seeds needs --scale");
+  expectBadInput("bench --no-velocity-shock", "--no-velocity-shock needs --scale");
   expectBadInput("bench --scale --n 10 --full", "--full is an option of the catalogue benchmark");
 }
 
