@@ -47,6 +47,21 @@ SceneDef stack(double shock, int passes) {
   return s;
 }
 
+// Two balls alone (no walls) on the large-scene path, one overlap-removal
+// pass.
+SceneDef pair(const BallDef& first, const BallDef& second, Vec2 gravity, double shock) {
+  SceneDef s;
+  s.dt = 1e-3;
+  s.gravity = gravity;
+  s.contact = {0.0, 0.0};
+  s.balls = {first, second};
+  s.solver.scaleThreshold = 0;
+  s.solver.scaleThresholdUnderGravity = 0;
+  s.solver.scalePositionPasses = 1;
+  s.solver.scaleShockPropagation = shock;
+  return s;
+}
+
 TEST(ScaleShock, StackOverlapShrinksByTheClosedFormRatioPerPass) {
   for (const double k : {0.0, 0.3, 0.7}) {
     for (const int passes : {1, 2, 4}) {
@@ -81,18 +96,9 @@ TEST(ScaleShock, OnlyTheMoveAlongGravityIsSharedUnevenly) {
   const double t = std::numbers::pi / 6.0, c = std::cos(t), sn = std::sin(t);
   const double reach = 2.0 * kRadius;
   for (const double k : {0.0, 0.7, 1.0}) {
-    SceneDef s;
-    s.dt = 1e-3;
-    s.gravity = {0.0, -1e-9};
-    s.contact = {0.0, 0.5};
     BallDef upper = restingBall(5.0), lower = restingBall(5.0);
     lower.position = upper.position + (reach - kOverlap) * Vec2(c, -sn);
-    s.balls = {upper, lower};
-    s.solver.scaleThreshold = 0;
-    s.solver.scaleThresholdUnderGravity = 0;
-    s.solver.scalePositionPasses = 1;
-    s.solver.scaleShockPropagation = k;
-    World w(s);
+    World w(pair(upper, lower, {0.0, -1e-9}, k));
     ASSERT_TRUE(w.plan().scale);
     w.step();
     SCOPED_TRACE(testing::Message() << "k = " << k);
@@ -113,17 +119,10 @@ TEST(ScaleShock, OnlyTheMoveAlongGravityIsSharedUnevenly) {
 // of mass stays put.
 TEST(ScaleShock, WithoutGravityTheShareIsByInverseMass) {
   for (const double k : {0.0, 0.7, 1.0}) {
-    SceneDef s;
-    s.dt = 1e-3;
-    s.contact = {0.0, 0.0};
     BallDef light = restingBall(0.0), heavy = restingBall(0.0);
     heavy.position = {2.0 * kRadius - kOverlap, 0.0};
     heavy.mass = 3.0;
-    s.balls = {light, heavy};
-    s.solver.scaleThreshold = 0;
-    s.solver.scalePositionPasses = 1;
-    s.solver.scaleShockPropagation = k;
-    World w(s);
+    World w(pair(light, heavy, {0.0, 0.0}, k));
     ASSERT_TRUE(w.plan().scale);
     w.step();
     SCOPED_TRACE(testing::Message() << "k = " << k);
