@@ -31,22 +31,6 @@ BallDef restingBall(double y) {
   return b;
 }
 
-// The stack under a gravity so weak (1e-9 m/s^2) that the velocities it
-// brings move nothing within the tolerances below: only its direction acts.
-SceneDef stack(double shock, int passes) {
-  SceneDef s;
-  s.dt = 1e-3;
-  s.gravity = {0.0, -1e-9};
-  s.contact = {0.0, 0.5};
-  s.walls = boxWalls({-10.0, 0.0}, {10.0, 10.0});
-  s.balls = {restingBall(kRadius), restingBall(3.0 * kRadius - kOverlap)};
-  s.solver.scaleThreshold = 0;
-  s.solver.scaleThresholdUnderGravity = 0;
-  s.solver.scalePositionPasses = passes;
-  s.solver.scaleShockPropagation = shock;
-  return s;
-}
-
 // Two balls alone (no walls) on the large-scene path, one overlap-removal
 // pass.
 SceneDef pair(const BallDef& first, const BallDef& second, Vec2 gravity, double shock) {
@@ -59,6 +43,18 @@ SceneDef pair(const BallDef& first, const BallDef& second, Vec2 gravity, double 
   s.solver.scaleThresholdUnderGravity = 0;
   s.solver.scalePositionPasses = 1;
   s.solver.scaleShockPropagation = shock;
+  return s;
+}
+
+// The stack on the floor under a gravity so weak (1e-9 m/s^2) that the
+// velocities it brings move nothing within the tolerances below: only its
+// direction acts.
+SceneDef stack(double shock, int passes) {
+  SceneDef s =
+      pair(restingBall(kRadius), restingBall(3.0 * kRadius - kOverlap), {0.0, -1e-9}, shock);
+  s.contact = {0.0, 0.5};
+  s.walls = boxWalls({-10.0, 0.0}, {10.0, 10.0});
+  s.solver.scalePositionPasses = passes;
   return s;
 }
 

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -63,27 +64,21 @@ TEST(CliBenchScale, TinyRunWritesTableAndCsv) {
   EXPECT_NE(text.find("\nbox2d,60,0,1,4,"), std::string::npos) << text;
 }
 
-// The CSV line of `engine` after the leading "engine," field, up to the
-// seed column (the timings differ from run to run; nothing else may).
+// Every CSV line of `engine` with its three timing fields (ms 0-299,
+// ms 300+, disk-steps/s) left out: they differ from run to run, nothing else
+// may. The fields kept end with a comma each.
 std::vector<std::string> figuresBySeed(const std::string& csv, const std::string& engine) {
   std::vector<std::string> lines;
-  std::size_t at = 0;
-  while ((at = csv.find("\n" + engine + ",", at)) != std::string::npos) {
-    const std::size_t end = csv.find('\n', at + 1);
-    std::string line = csv.substr(at + 1, end == std::string::npos ? end : end - at - 1);
-    // Drop the three timing fields (ms 0-299, ms 300+, disk-steps/s).
-    std::vector<std::string> fields;
-    std::size_t from = 0, comma;
-    while ((comma = line.find(',', from)) != std::string::npos) {
-      fields.push_back(line.substr(from, comma - from));
-      from = comma + 1;
-    }
-    fields.push_back(line.substr(from));
-    std::string kept;
-    for (std::size_t i = 0; i < fields.size(); ++i)
-      if (i < 5 || i > 7) kept += fields[i] + ",";
+  std::istringstream in(csv);
+  std::string line;
+  std::getline(in, line);  // the header, whose first column is named "engine" too
+  while (std::getline(in, line)) {
+    if (!line.starts_with(engine + ",")) continue;
+    std::istringstream fields(line);
+    std::string field, kept;
+    for (int i = 0; std::getline(fields, field, ','); ++i)
+      if (i < 5 || i > 7) kept += field + ",";
     lines.push_back(kept);
-    at = end == std::string::npos ? csv.size() : end;
   }
   return lines;
 }

@@ -128,12 +128,10 @@ TEST(StressMeasures, ObservationOfARecordedRun) {
   EXPECT_EQ(classify(observeStress(broken, c)).reasons, "non-finite");
 }
 
-// The fix for resting contact (docs/stress.md): the stress run's dense piles
-// of 200 balls, stepped by the engine with its default settings, come to rest
-// (kinetic energy below that of the whole mass moving at 1 mm/s) with no
-// overlap beyond rounding, and their energy never grows. Before the fix
-// (no scaleThresholdUnderGravity, so these piles took the small-scene step)
-// they jittered: 3-4 J left after 4 s, overlap ~1 % of the radius.
+// The stress run's two dense piles of 200 balls (e = 0 and 0.5), stepped by
+// the engine with the given shock propagation in the overlap removal, come
+// to rest (kinetic energy below that of the whole mass moving at 1 mm/s) with
+// no overlap beyond rounding, and their energy never grows.
 void expectDensePilesComeToRest(double shock) {
   int piles = 0;
   for (StressCase c : stressCases(false)) {
@@ -154,6 +152,10 @@ void expectDensePilesComeToRest(double shock) {
   EXPECT_EQ(piles, 2);
 }
 
+// The fix for resting contact (docs/stress.md), with the default settings.
+// Before the fix (no scaleThresholdUnderGravity, so these piles took the
+// small-scene step) they jittered: 3-4 J left after 4 s, overlap ~1 % of the
+// radius.
 TEST(StressEngine, DensePilesComeToRestWithoutOverlap) {
   expectDensePilesComeToRest(SolverSettings{}.scaleShockPropagation);
 }
