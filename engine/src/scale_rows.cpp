@@ -30,21 +30,21 @@ constexpr double kMarginFraction = 0.2;
 // 8, 8.0 %; 16, 9.5 %.
 constexpr int kStripColumns = 8;
 
-// Writes to `out` the balls of [k, stop) after ball a (by index) whose
-// centres lie within ra + their radius + margin of xa; returns the new end.
-// `out` must have room for every candidate. A function of its own so that the
-// loop's values stay in registers (in the pair search's lambda every captured
-// value was reloaded after each store).
-inline int* nearBalls(const ScaleSolver::CellBall* k, const ScaleSolver::CellBall* stop, int a,
-                      Vec2 xa, double ra, double margin, int* out) {
-  // Without branches: whether a candidate is kept is as good as random
-  // (half of them come before a), and mispredicted jumps cost more than the
-  // arithmetic of the rejected ones.
-  for (; k != stop; ++k) {
-    const Vec2 d = k->position - xa;
-    const double limit = ra + k->radius + margin;
-    *out = k->index;
-    out += static_cast<int>(k->index > a) & static_cast<int>(d.squaredNorm() <= limit * limit);
+// Writes to `out` the numbers of the balls of [k, stop) whose centres lie
+// within ra + their radius + margin of xa (`first` is the number of the
+// ball at `base`); returns the new end. `out` must have room for every
+// candidate. A function of its own so that the loop's values stay in
+// registers (in the pair search's lambda every captured value was reloaded
+// after each store).
+inline int* nearBalls(const ScaleSolver::CellBall* base, int begin, int end, Vec2 xa, double ra,
+                      double margin, int* out) {
+  // Without branches: whether a candidate is kept is as good as random, and
+  // mispredicted jumps cost more than the arithmetic of the rejected ones.
+  for (int k = begin; k < end; ++k) {
+    const Vec2 d = base[k].position - xa;
+    const double limit = ra + base[k].radius + margin;
+    *out = k;
+    out += static_cast<int>(d.squaredNorm() <= limit * limit);
   }
   return out;
 }
@@ -61,28 +61,29 @@ inline bool nearWall(const Vec2& x, double grown, const WallDef& wall, WallHit& 
   return touchWall(x, grown, wall, hit);
 }
 
-// A row's masses and targets, from its bodies (r.a, r.b), normal and reach,
-// the distance of the centres (or of the centre from the wall) and the
-// mixed material.
-inline void fillRow(const ScaleBodies& s, const ContactMaterial& m, double dist,
+// A row's masses and targets, from its bodies (r.a, r.b, numbered in cell
+// order), normal and reach, the distance of the centres (or of the centre
+// from the wall), the mixed material and the scene's forced velocities.
+inline void fillRow(const ScaleSolver::Motion* body, const ScaleSolver::CellBall* cell,
+                    const ScaleBodies& s, const ContactMaterial& m, double dist,
                     ScaleSolver::Row& r) {
-  const int a = r.a, b = r.b;
-  const double invA = s.invMass[a], invB = b >= 0 ? s.invMass[b] : 0.0;
+  const ScaleSolver::Motion& a = body[r.a];
+  const ScaleSolver::Motion* b = r.b >= 0 ? &body[r.b] : nullptr;
+  const double invA = a.invMass, invB = b ? b->invMass : 0.0;
   r.massN = 1.0 / (invA + invB);
   r.friction = m.friction;
   if (m.friction > 0.0) {
-    const double ra = s.radius[a], rb = b >= 0 ? s.radius[b] : 0.0;
-    const double jb = b >= 0 ? rb * rb * s.invInertia[b] : 0.0;
-    r.massT = 1.0 / (invA + invB + ra * ra * s.invInertia[a] + jb);
+    const double jb = b ? b->radius * b->radius * b->invInertia : 0.0;
+    r.massT = 1.0 / (invA + invB + a.radius * a.radius * a.invInertia + jb);
   }
   // The approach the bodies brought into the step: what this step's
   // forces added is cancelled, not bounced (docs/physics.md).
-  const Vec2 vb = b >= 0 ? s.velocity[b] : Vec2::Zero();
-  const double gn = (vb - s.velocity[a]).dot(r.normal);
+  const Vec2 vb = b ? b->velocity : Vec2::Zero();
+  const double gn = (vb - a.velocity).dot(r.normal);
   double forced = 0.0;
   if (!s.forcedVelocity.empty()) {
-    const Vec2 fb = b >= 0 ? s.forcedVelocity[b] : Vec2::Zero();
-    forced = (fb - s.forcedVelocity[a]).dot(r.normal);
+    const Vec2 fb = b ? s.forcedVelocity[static_cast<std::size_t>(cell[r.b].index)] : Vec2::Zero();
+    forced = (fb - s.forcedVelocity[static_cast<std::size_t>(cell[r.a].index)]).dot(r.normal);
   }
   const double brought = gn - forced;
   if (dist > r.reach * (1.0 + kTouchSlop)) {
@@ -144,26 +145,51 @@ ScaleSolver::Grid ScaleSolver::buildGrid(const ScaleBodies& s) {
     ++cellStart_[static_cast<std::size_t>(c) + 1];
   }
   for (std::size_t c = 1; c < cellStart_.size(); ++c) cellStart_[c] += cellStart_[c - 1];
-  // Each ball's position, radius and index in cell order: the three cells
-  // of a grid row around a ball are one contiguous run of this array.
+  // The balls in cell order: the solver's numbering for this step (the
+  // last step's is kept for the warm start).
+  std::swap(numberOf_, lastNumberOf_);
+  numberOf_.resize(n);
   cellBalls_.resize(n);
+  cellOf_.resize(n);
   std::vector<int> next(cellStart_.begin(), cellStart_.end() - 1);
   for (std::size_t i = 0; i < n; ++i) {
-    const std::size_t k = static_cast<std::size_t>(next[static_cast<std::size_t>(ballCell_[i])]++);
-    cellBalls_[k] = {s.position[i], s.radius[i], static_cast<int>(i)};
+    const int c = ballCell_[i];
+    const int k = next[static_cast<std::size_t>(c)]++;
+    cellBalls_[static_cast<std::size_t>(k)] = {s.position[i], s.radius[i], static_cast<int>(i)};
+    cellOf_[static_cast<std::size_t>(k)] = c;
   }
+  // Within a cell, bottom-up too (by y, then x; the scene's index only for
+  // balls at the same point): then the numbering, and with it every result,
+  // is the scene's numbering permuted, whatever order the scene lists its
+  // balls in. A cell holds one or two balls: insertion sort.
+  const auto below = [](const CellBall& p, const CellBall& q) {
+    if (p.position.y() != q.position.y()) return p.position.y() < q.position.y();
+    if (p.position.x() != q.position.x()) return p.position.x() < q.position.x();
+    return p.index < q.index;
+  };
+  for (std::size_t c = 0; c + 1 < cellStart_.size(); ++c)
+    for (int k = cellStart_[c] + 1; k < cellStart_[c + 1]; ++k)
+      for (int j = k; j > cellStart_[c] && below(cellBalls_[static_cast<std::size_t>(j)],
+                                                 cellBalls_[static_cast<std::size_t>(j) - 1]);
+           --j)
+        std::swap(cellBalls_[static_cast<std::size_t>(j)],
+                  cellBalls_[static_cast<std::size_t>(j) - 1]);
+  for (std::size_t k = 0; k < n; ++k)
+    numberOf_[static_cast<std::size_t>(cellBalls_[k].index)] = static_cast<int>(k);
   return {cols, rows, margin};
 }
 
 void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
   const std::size_t n = s.position.size();
   const auto [cols, rows, margin] = buildGrid(s);
+  // The last step's impulses can be matched only if it had the same balls.
+  const bool warm = lastCount_ == n && lastNumberOf_.size() == n;
 
   // Rows are split into vertical strips of kStripColumns grid columns, so a
   // row joins balls of the same or of neighbouring strips; a row belongs to
   // the strip of its left ball. Rows of two even strips (or of two odd
   // strips) then share no ball: all even strips can be solved at once, each in
-  // key order (Gauss-Seidel), then all odd strips. The strips depend on the
+  // (a, b) order (Gauss-Seidel), then all odd strips. The strips depend on the
   // positions only, never on the thread count, so the result is the same for
   // any count.
   const int strips = std::clamp(cols / kStripColumns, 1, kMaxStrips);
@@ -172,52 +198,60 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
   // Each thread's counters on cache lines of their own (16 ints = 64 bytes).
   const std::size_t stride = (width + 15) / 16 * 16;
   stripOf_.resize(n);
+  lastOf_.resize(n);
+  motion_.resize(n);
   stripCount_.assign(static_cast<std::size_t>(threads) * stride, 0);
   stripStart_.assign(width, 0);
   found_.resize(static_cast<std::size_t>(threads));
-  std::vector<std::size_t> offset(static_cast<std::size_t>(threads) + 1, 0);
-  const std::uint64_t wallBase = n;
+  linkStart_.assign(static_cast<std::size_t>(threads) + 1, 0);
   const CellBall* cells = cellBalls_.data();
+  Motion* body = motion_.data();
   pool.run([&](int t) {
     const auto [begin, end] = part(n, t, threads);
-    // Whole grid columns per strip: neighbours are at most one column apart.
-    for (std::size_t i = begin; i < end; ++i) stripOf_[i] = (ballCell_[i] % cols) * strips / cols;
+    for (std::size_t k = begin; k < end; ++k) {
+      const std::size_t i = static_cast<std::size_t>(cells[k].index);
+      // Whole grid columns per strip: neighbours are at most one column apart.
+      stripOf_[k] = (cellOf_[k] % cols) * strips / cols;
+      // Each ball's velocity and mass properties in one place: a row touches
+      // two of them, in an order the strips decide.
+      body[k] = {s.velocity[i], s.angularVelocity[i], s.invMass[i], s.invInertia[i], s.radius[i]};
+      lastOf_[k] = warm ? lastNumberOf_[i] : -1;
+    }
     pool.sync();
 
-    // First the pairs only (8 bytes each), in key order, counted per strip;
-    // then, once every thread's counts are known, each row is made in its
-    // place in strip order. Making the 96-byte rows first and moving them
+    // First the pairs only (8 bytes each), in (a, b) order, counted per
+    // strip; then, once every thread's counts are known, each row is made in
+    // its place in strip order. Making the 96-byte rows first and moving them
     // into strip order afterwards cost a tenth of the step at N = 100,000.
     std::vector<Link>& links = found_[static_cast<std::size_t>(t)].links;
     links.clear();
     int* count = stripCount_.data() + static_cast<std::size_t>(t) * stride;
-    std::vector<int> partners;  // this ball's, then sorted: rows in key order
+    std::vector<int> partners;  // this ball's, in increasing order
     for (std::size_t ia = begin; ia < end; ++ia) {
       const int a = static_cast<int>(ia);
-      const Vec2 xa = s.position[ia];
-      const double ra = s.radius[ia];
+      const Vec2 xa = cells[ia].position;
+      const double ra = cells[ia].radius;
       const int sa = stripOf_[ia];
-      const int cx = ballCell_[ia] % cols, cy = ballCell_[ia] / cols;
-      const int x0 = std::max(0, cx - 1), x1 = std::min(cols - 1, cx + 1);
-      const int y0 = std::max(0, cy - 1), y1 = std::min(rows - 1, cy + 1);
-      std::array<std::pair<int, int>, 3> runs{};
-      std::size_t candidates = 0;
-      for (int y = y0; y <= y1; ++y) {
-        const std::size_t row = static_cast<std::size_t>(y) * static_cast<std::size_t>(cols);
-        std::pair<int, int>& run = runs[static_cast<std::size_t>(y - y0)];
-        run = {cellStart_[row + static_cast<std::size_t>(x0)],
-               cellStart_[row + static_cast<std::size_t>(x1) + 1]};
-        candidates += static_cast<std::size_t>(run.second - run.first);
+      const int cx = cellOf_[ia] % cols, cy = cellOf_[ia] / cols;
+      const std::size_t x0 = static_cast<std::size_t>(std::max(0, cx - 1));
+      const std::size_t x1 = static_cast<std::size_t>(std::min(cols - 1, cx + 1));
+      // The partners numbered after a: in its own grid row, the rest of its
+      // cell and the cell to its right (the cell to its left comes before
+      // it); in the grid row above, the three cells (the row below comes
+      // before it). Both runs are in increasing order, the first before the
+      // second: the partners need no sorting.
+      const std::size_t here = static_cast<std::size_t>(cy) * static_cast<std::size_t>(cols);
+      std::array<std::pair<int, int>, 2> runs{};
+      runs[0] = {a + 1, cellStart_[here + x1 + 1]};
+      if (cy + 1 < rows) {
+        const std::size_t above = here + static_cast<std::size_t>(cols);
+        runs[1] = {cellStart_[above + x0], cellStart_[above + x1 + 1]};
       }
-      partners.resize(candidates);
+      partners.resize(static_cast<std::size_t>(runs[0].second - runs[0].first) +
+                      static_cast<std::size_t>(runs[1].second - runs[1].first));
       int* near = partners.data();
-      for (int y = y0; y <= y1; ++y) {
-        const std::pair<int, int> run = runs[static_cast<std::size_t>(y - y0)];
-        near = nearBalls(cells + run.first, cells + run.second, a, xa, ra, margin, near);
-      }
+      for (const auto& [from, to] : runs) near = nearBalls(cells, from, to, xa, ra, margin, near);
       partners.resize(static_cast<std::size_t>(near - partners.data()));
-      // Key order within the ball: by partner index.
-      std::sort(partners.begin(), partners.end());
       for (const int b : partners) {
         links.push_back({a, b});
         ++count[std::min(sa, stripOf_[static_cast<std::size_t>(b)])];
@@ -232,14 +266,15 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
     pool.sync();
     if (t == 0) {
       for (int u = 0; u < threads; ++u)
-        offset[static_cast<std::size_t>(u) + 1] =
-            offset[static_cast<std::size_t>(u)] + found_[static_cast<std::size_t>(u)].links.size();
-      slot_.resize(offset.back());
-      rows_.resize(offset.back());
-      pairs_.resize(offset.back());
+        linkStart_[static_cast<std::size_t>(u) + 1] =
+            linkStart_[static_cast<std::size_t>(u)] +
+            found_[static_cast<std::size_t>(u)].links.size();
+      slot_.resize(linkStart_.back());
+      rows_.resize(linkStart_.back());
+      pairs_.resize(linkStart_.back());
       // Where each thread's rows of each strip start: strip by strip, thread
-      // by thread, so that a strip's rows are in key order (thread t has the
-      // t-th range of balls).
+      // by thread, so that a strip's rows are in (a, b) order (thread t has
+      // the t-th range of balls).
       int at = 0;
       for (int st = 0; st < strips; ++st) {
         stripStart_[static_cast<std::size_t>(st)] = at;
@@ -254,46 +289,52 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
     }
     pool.sync();
 
-    // The last step's impulses are sorted by key, as these rows are made.
-    auto last =
-        std::lower_bound(lastKey_.begin(), lastKey_.end(), static_cast<std::uint64_t>(begin) << 32);
-    int* slot = slot_.data() + offset[static_cast<std::size_t>(t)];
+    int* slot = slot_.data() + linkStart_[static_cast<std::size_t>(t)];
     for (std::size_t k = 0; k < links.size(); ++k) {
       const int a = links[k].a, b = links[k].b;
-      const std::size_t ia = static_cast<std::size_t>(a);
+      const CellBall& ca = cells[a];
+      const std::size_t ia = static_cast<std::size_t>(ca.index);
       Row r;
       r.a = a;
       r.b = b;
       double dist = 0.0;
       ContactMaterial m;
       if (b >= 0) {
-        const Vec2 d = s.position[static_cast<std::size_t>(b)] - s.position[ia];
-        r.reach = s.radius[ia] + s.radius[static_cast<std::size_t>(b)];
+        const CellBall& cb = cells[b];
+        const Vec2 d = cb.position - ca.position;
+        r.reach = ca.radius + cb.radius;
         dist = std::sqrt(d.squaredNorm());
         r.normal = dist > 0.0 ? Vec2(d / dist) : Vec2(1.0, 0.0);
-        m = mixMaterials(s.material[ia], s.material[static_cast<std::size_t>(b)]);
+        m = mixMaterials(s.material[ia], s.material[static_cast<std::size_t>(cb.index)]);
       } else {
         const std::size_t w = static_cast<std::size_t>(-1 - b);
         WallHit hit;
-        nearWall(s.position[ia], s.radius[ia] + margin, s.walls[w], hit);
-        r.reach = s.radius[ia];
-        dist = s.radius[ia] + margin - hit.overlap;
+        nearWall(ca.position, ca.radius + margin, s.walls[w], hit);
+        r.reach = ca.radius;
+        dist = ca.radius + margin - hit.overlap;
         r.normal = hit.normal;
         m = mixMaterials(s.material[ia], s.wallMaterial[w]);
       }
-      fillRow(s, m, dist, r);
-      const std::uint64_t other =
-          b >= 0 ? static_cast<std::uint64_t>(b) : wallBase + static_cast<std::uint64_t>(-1 - b);
-      r.key = (static_cast<std::uint64_t>(a) << 32) | other;
-      // Warm start from the last step's row with the same key, if any.
-      while (last != lastKey_.end() && *last < r.key) ++last;
-      if (last != lastKey_.end() && *last == r.key) {
-        const std::size_t j = static_cast<std::size_t>(last - lastKey_.begin());
-        r.lambdaN = lastN_[j];
-        r.lambdaT = lastT_[j];
+      fillRow(body, cells, s, m, dist, r);
+      // Warm start from the last step's row of the same two bodies, if any.
+      // The impulses do not depend on which ball is a: swapping a and b
+      // turns n and tau (= perp n) around and P on b into P on a.
+      const int la = lastOf_[static_cast<std::size_t>(a)];
+      const int lb =
+          b >= 0 ? lastOf_[static_cast<std::size_t>(b)] : static_cast<int>(lastCount_) + (-1 - b);
+      if (la >= 0 && lb >= 0) {
+        const std::size_t lo = static_cast<std::size_t>(b >= 0 ? std::min(la, lb) : la);
+        const int other = b >= 0 ? std::max(la, lb) : lb;
+        for (int j = lastStart_[lo]; j < lastStart_[lo + 1]; ++j) {
+          if (lastOther_[static_cast<std::size_t>(j)] != other) continue;
+          r.lambdaN = lastN_[static_cast<std::size_t>(j)];
+          r.lambdaT = lastT_[static_cast<std::size_t>(j)];
+          break;
+        }
       }
-      const int st =
-          b >= 0 ? std::min(stripOf_[ia], stripOf_[static_cast<std::size_t>(b)]) : stripOf_[ia];
+      const int st = b >= 0 ? std::min(stripOf_[static_cast<std::size_t>(a)],
+                                       stripOf_[static_cast<std::size_t>(b)])
+                            : stripOf_[static_cast<std::size_t>(a)];
       const int pos = count[st]++;
       rows_[static_cast<std::size_t>(pos)] = r;
       pairs_[static_cast<std::size_t>(pos)] = {a, b, r.reach};

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <tuple>
 
 #include "particles/broad_phase.h"
 #include "particles/world.h"
@@ -162,19 +163,22 @@ inline void supportRow(ScaleSolver::Motion* m, const ScaleSolver::Row& r, Vec2 d
 // more than their lower partners: the pair's centre shifted sideways on every
 // pass, and shallow piles crept for ever instead of coming to rest
 // (docs/scale.md, "Shock propagation").
-// Returns the overlap found (m, <= 0 when apart).
-inline double projectRow(const ScaleBodies& s, const ScaleSolver::Pair& r, double shock) {
+// Returns the overlap found (m, <= 0 when apart). Balls are numbered in
+// cell order: `ball` holds their positions, `body` their masses.
+inline double projectRow(ScaleSolver::CellBall* ball, const ScaleSolver::Motion* body,
+                         const ScaleBodies& s, const ScaleSolver::Pair& r, double shock) {
   const int a = r.a;
+  Vec2& xa = ball[a].position;
   if (r.b < 0) {
     WallHit hit;
-    if (!touchWall(s.position[a], s.radius[a], s.walls[static_cast<std::size_t>(-1 - r.b)], hit))
-      return 0.0;
+    if (!touchWall(xa, r.reach, s.walls[static_cast<std::size_t>(-1 - r.b)], hit)) return 0.0;
     if (hit.overlap <= kOverlapTolerance * r.reach) return hit.overlap;
-    s.position[a] -= hit.overlap * hit.normal;
+    xa -= hit.overlap * hit.normal;
     return hit.overlap;
   }
   const int b = r.b;
-  const Vec2 d = s.position[b] - s.position[a];
+  Vec2& xb = ball[b].position;
+  const Vec2 d = xb - xa;
   const double dist2 = d.squaredNorm();
   // Apart (most speculative rows): no square root. Nothing moves, and an
   // overlap <= 0 changes neither the deepest overlap seen nor the flags.
@@ -183,7 +187,7 @@ inline double projectRow(const ScaleBodies& s, const ScaleSolver::Pair& r, doubl
   const double overlap = r.reach - dist;
   if (overlap <= kOverlapTolerance * r.reach) return overlap;
   const Vec2 n = dist > 0.0 ? Vec2(d / dist) : Vec2(1.0, 0.0);
-  const double wa = s.invMass[a], wb = s.invMass[b];
+  const double wa = body[a].invMass, wb = body[b].invMass;
   if (shock > 0.0) {
     const double below = n.dot(s.down);  // > 0: b lies below a
     const double lowA = wa * (1.0 + shock * std::min(0.0, below));
@@ -194,23 +198,23 @@ inline double projectRow(const ScaleBodies& s, const ScaleSolver::Pair& r, doubl
       const Vec2 along = (overlap * below) * s.down;  // the move along gravity
       const Vec2 across = overlap * n - along;
       const double even = 1.0 / (wa + wb), low = 1.0 / (lowA + lowB);
-      s.position[a] -= (wa * even) * across + (lowA * low) * along;
-      s.position[b] += (wb * even) * across + (lowB * low) * along;
+      xa -= (wa * even) * across + (lowA * low) * along;
+      xb += (wb * even) * across + (lowB * low) * along;
       return overlap;
     }
   }
   const double share = overlap / (wa + wb);
-  s.position[a] -= share * wa * n;
-  s.position[b] += share * wb * n;
+  xa -= share * wa * n;
+  xb += share * wb * n;
   return overlap;
 }
 
 }  // namespace
 
 void ScaleSolver::reset() {
-  lastKey_.clear();
-  lastN_.clear();
-  lastT_.clear();
+  lastCount_ = 0;
+  lastNumberOf_.clear();
+  numberOf_.clear();
 }
 
 std::size_t ScaleSolver::memoryBytes() const {
@@ -218,9 +222,12 @@ std::size_t ScaleSolver::memoryBytes() const {
       sizeof(Row) * rows_.capacity() + sizeof(Pair) * pairs_.capacity() +
       sizeof(Motion) * motion_.capacity() +
       sizeof(int) * (stripStart_.capacity() + stripCount_.capacity()) +
-      sizeof(std::uint64_t) * lastKey_.capacity() + sizeof(int) * stripOf_.capacity() +
-      sizeof(int) * slot_.capacity() + sizeof(double) * (lastN_.capacity() + lastT_.capacity()) +
-      sizeof(int) * (cellStart_.capacity() + ballCell_.capacity()) +
+      sizeof(int) * (lastStart_.capacity() + lastOther_.capacity() + lastOf_.capacity()) +
+      sizeof(int) * stripOf_.capacity() + sizeof(int) * slot_.capacity() +
+      sizeof(std::size_t) * linkStart_.capacity() +
+      sizeof(double) * (lastN_.capacity() + lastT_.capacity()) +
+      sizeof(int) * (cellStart_.capacity() + ballCell_.capacity() + cellOf_.capacity()) +
+      sizeof(int) * (numberOf_.capacity() + lastNumberOf_.capacity()) +
       sizeof(CellBall) * cellBalls_.capacity() + sizeof(ThreadLinks) * found_.capacity();
   for (const ThreadLinks& f : found_) bytes += sizeof(Link) * f.links.capacity();
   return bytes;
@@ -294,15 +301,10 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
     }
   };
 
-  motion_.resize(n);
   Motion* m = motion_.data();
+  CellBall* ball = cellBalls_.data();
   pool.run([&](int t) {
-    // Each ball's velocity and mass properties in one cache line: a row
-    // touches two of them, in an order the strips decide.
     const auto [b, e] = part(n, t, threads);
-    for (std::size_t i = b; i < e; ++i)
-      m[i] = {s.velocity[i], s.angularVelocity[i], s.invMass[i], s.invInertia[i], s.radius[i]};
-    pool.sync();
     // Warm start: the last step's impulses, applied again.
     byStrip(t, [&](std::size_t k) {
       Row& r = rows_[k];
@@ -313,13 +315,7 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
     byStrip(t, [&](std::size_t k) { restituteRow(m, rows_[k]); });
     if (supportSweep) byStrip(t, [&](std::size_t k) { supportRow(m, rows_[k], s.down); });
 
-    for (std::size_t i = b; i < e; ++i) {
-      s.velocity[i] = m[i].velocity;
-      s.angularVelocity[i] = m[i].angularVelocity;
-    }
-    for (std::size_t i = b; i < e; ++i) s.position[i] += s.dt * s.velocity[i];
-    if (s.spin)
-      for (std::size_t i = b; i < e; ++i) s.angle[i] += s.dt * s.angularVelocity[i];
+    for (std::size_t k = b; k < e; ++k) ball[k].position += s.dt * m[k].velocity;
     pool.sync();
 
     double& deepest = seen[static_cast<std::size_t>(t)].deepest;
@@ -328,7 +324,7 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
       mine = 0;
       byStrip(t, [&](std::size_t k) {
         const Pair& r = pairs_[k];
-        const double overlap = projectRow(s, r, shock);
+        const double overlap = projectRow(ball, m, s, r, shock);
         if (pass == 0) deepest = std::max(deepest, overlap);
         if (overlap > kOverlapTolerance * r.reach) mine = 1;
       });
@@ -338,30 +334,67 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
       if (!any) break;
       pool.sync();  // nobody rewrites this pass's flags before all have read them
     }
-  });
 
-  // Keep this step's impulses, in key order, for the next step's warm start.
-  lastKey_.resize(slot_.size());
-  lastN_.resize(slot_.size());
-  lastT_.resize(slot_.size());
-  pool.run([&](int t) {
-    const auto [b, e] = part(slot_.size(), t, threads);
+    // Back to the scene's numbering. No thread moves a ball any more: the
+    // last pass ended with a sync, and every thread left the loop after it.
     for (std::size_t k = b; k < e; ++k) {
-      const Row& r = rows_[static_cast<std::size_t>(slot_[k])];
-      lastKey_[k] = r.key;
-      lastN_[k] = r.lambdaN;
-      lastT_[k] = r.lambdaT;
+      const std::size_t i = static_cast<std::size_t>(ball[k].index);
+      s.position[i] = ball[k].position;
+      s.velocity[i] = m[k].velocity;
+      s.angularVelocity[i] = m[k].angularVelocity;
+      if (s.spin) s.angle[i] += s.dt * m[k].angularVelocity;
     }
   });
+
+  // Keep this step's impulses for the next step's warm start, by ball a in
+  // this step's numbering (slot_ lists the rows in (a, b) order; thread t
+  // found the rows of its own range of balls).
+  lastOther_.resize(slot_.size());
+  lastN_.resize(slot_.size());
+  lastT_.resize(slot_.size());
+  lastStart_.resize(n + 1);
+  pool.run([&](int t) {
+    const auto [b, e] = part(n, t, threads);
+    std::size_t k = linkStart_[static_cast<std::size_t>(t)];
+    const std::size_t stop = linkStart_[static_cast<std::size_t>(t) + 1];
+    for (std::size_t a = b; a < e; ++a) {
+      lastStart_[a] = static_cast<int>(k);
+      for (; k < stop; ++k) {
+        const Row& r = rows_[static_cast<std::size_t>(slot_[k])];
+        if (static_cast<std::size_t>(r.a) != a) break;
+        lastOther_[k] = r.b >= 0 ? r.b : static_cast<int>(n) + (-1 - r.b);
+        lastN_[k] = r.lambdaN;
+        lastT_[k] = r.lambdaT;
+      }
+    }
+    if (t == threads - 1) lastStart_[n] = static_cast<int>(slot_.size());
+  });
+  lastCount_ = n;
   if (impacts) {
+    // In the scene's numbering, with a < b and in (a, b) order, as the small
+    // path reports them: swapping a and b turns the normal around and leaves
+    // both impulses as they are.
     impacts->clear();
     for (std::size_t k = 0; k < slot_.size(); ++k) {
       const Row& r = rows_[static_cast<std::size_t>(slot_[k])];
       if (r.lambdaN == 0.0) continue;
       const bool wall = r.b < 0;
-      impacts->push_back({r.a, wall ? -1 - r.b : r.b, wall, r.normal, r.lambdaN, r.lambdaT,
-                          r.friction == 0.0 ? 0.0 : r.friction * r.lambdaN});
+      ImpactEvent e{ball[r.a].index,
+                    wall ? -1 - r.b : ball[r.b].index,
+                    wall,
+                    r.normal,
+                    r.lambdaN,
+                    r.lambdaT,
+                    r.friction == 0.0 ? 0.0 : r.friction * r.lambdaN};
+      if (!wall && e.b < e.a) {
+        std::swap(e.a, e.b);
+        e.normal = -e.normal;
+      }
+      impacts->push_back(e);
     }
+    std::sort(impacts->begin(), impacts->end(), [](const ImpactEvent& x, const ImpactEvent& y) {
+      return std::tuple(x.a, x.wall, x.b) < std::tuple(y.a, y.wall, y.b);
+    });
   }
   stats.contacts = static_cast<int>(rows_.size());
   stats.passes = iterations;

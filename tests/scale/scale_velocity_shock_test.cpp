@@ -4,7 +4,7 @@
 //
 // Balls 0, 1 and 2 (radius r, 1 kg) sit on top of each other on the floor,
 // touching, at rest, e = 0. The step adds g dt downwards to each. With one
-// velocity iteration the rows are solved in key order: (0, 1) finds no
+// velocity iteration the rows are solved in cell order: (0, 1) finds no
 // approach (both move at -g dt), (0, floor) stops ball 0, (1, 2) finds no
 // approach. After the iteration ball 0 is at rest and balls 1 and 2 still
 // move at -g dt: the stack sinks into ball 0. The sweep then takes (0, 1),

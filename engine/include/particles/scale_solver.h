@@ -48,7 +48,9 @@ class ScaleSolver {
             std::vector<ImpactEvent>* impacts);
   std::size_t memoryBytes() const;
 
-  // One contact row: a ball pair, or a ball and a wall (b < 0).
+  // One contact row: a ball pair, or a ball and a wall (b < 0). Balls are
+  // numbered in the grid's cell order (CellBall), not as the scene numbers
+  // them.
   struct Row {
     Vec2 normal{1.0, 0.0};  // unit, from a to b (first: a Vec2 is 16-byte aligned)
     int a = 0;
@@ -62,9 +64,8 @@ class ScaleSolver {
     // speculative row whose bodies close their gap within the step: -e times
     // the approach they brought. 0: no restitution pass for this row.
     double bounce = 0.0;
-    double lambdaN = 0.0;   // N s, accumulated normal impulse (>= 0)
-    double lambdaT = 0.0;   // N s, accumulated tangential impulse
-    std::uint64_t key = 0;  // (a, b) for warm starting, in the contact order
+    double lambdaN = 0.0;  // N s, accumulated normal impulse (>= 0)
+    double lambdaT = 0.0;  // N s, accumulated tangential impulse
   };
 
   // A row as the overlap removal sees it: 16 bytes instead of a Row's 96.
@@ -74,11 +75,14 @@ class ScaleSolver {
     double reach = 0.0;  // m
   };
 
-  // A ball as the pair search sees it, in the grid's cell order.
+  // A ball in the grid's cell order: cells bottom row first, left to right,
+  // and by scene index within a cell. The solver numbers the balls in this
+  // order for the whole step, so that its Gauss-Seidel order runs bottom-up
+  // whatever the scene's numbering, and balls that touch lie close in memory.
   struct CellBall {
-    Vec2 position;  // m
+    Vec2 position;  // m; moved by the step, copied back at its end
     double radius;  // m
-    int index;      // the ball's
+    int index;      // the ball's index in the scene
   };
 
   // A ball as the velocity iterations see it, packed in 48 bytes.
@@ -113,19 +117,28 @@ class ScaleSolver {
     std::vector<Link> links;
   };
   std::vector<ThreadLinks> found_;
-  std::vector<Row> rows_;        // in solve order: by strip, then key
-  std::vector<Pair> pairs_;      // rows_'s balls and reach, in the same order
-  std::vector<int> stripStart_;  // rows_ of strip k: [stripStart_[k], stripStart_[k+1])
-  std::vector<int> stripOf_;     // per ball: its vertical strip
-  std::vector<Motion> motion_;   // per ball, during the velocity iterations
-  std::vector<int> slot_;        // per row in key order: its index in rows_
-  std::vector<int> stripCount_;  // per thread and strip: rows, then where they go
-  // The last step's accumulated impulses, by key (sorted).
-  std::vector<std::uint64_t> lastKey_;
+  std::vector<Row> rows_;               // in solve order: by strip, then (a, b)
+  std::vector<Pair> pairs_;             // rows_'s balls and reach, in the same order
+  std::vector<int> stripStart_;         // rows_ of strip k: [stripStart_[k], stripStart_[k+1])
+  std::vector<int> stripOf_;            // per ball: its vertical strip
+  std::vector<Motion> motion_;          // per ball, during the velocity iterations
+  std::vector<int> slot_;               // per row in (a, b) order: its index in rows_
+  std::vector<std::size_t> linkStart_;  // slot_ of thread t: [linkStart_[t], linkStart_[t+1])
+  std::vector<int> stripCount_;         // per thread and strip: rows, then where they go
+  // The last step's accumulated impulses, by the last step's numbering: the
+  // rows of ball a are [lastStart_[a], lastStart_[a + 1]), each with its
+  // partner (lastCount_ + w for wall w).
+  std::vector<int> lastStart_, lastOther_;
   std::vector<double> lastN_, lastT_;
+  std::size_t lastCount_ = 0;
+  std::vector<int> lastOf_;  // per ball: its number in the last step, or -1
   // Grid (counting sort of balls into cells).
   std::vector<int> cellStart_, ballCell_;
+  std::vector<int> cellOf_;          // per ball (cell order): its cell
   std::vector<CellBall> cellBalls_;  // the balls in cell order
+  // Per scene index: the ball's number in this step's and the last step's
+  // cell order.
+  std::vector<int> numberOf_, lastNumberOf_;
   PoolHandle pool_;
 };
 
