@@ -24,10 +24,10 @@ constexpr double kTouchSlop = 1e-9;
 // pair search per step.
 constexpr double kMarginFraction = 0.2;
 // Grid columns per strip, at least: within a strip the rows are solved in
-// key order, which for a pile numbered row by row from the bottom is close
-// to bottom-up; wider strips keep more of that order. Measured on the pile
-// (docs/scale.md): 1 column, 12.8 % max overlap at N = 10,000; 4, 10.6 %;
-// 8, 8.0 %; 16, 9.5 %.
+// (a, b) order, which in the cell numbering is bottom-up; wider strips keep
+// more of that order. Measured on the pile (docs/scale.md), when rows were
+// still in the scene's numbering: 1 column, 12.8 % max overlap at N =
+// 10,000; 4, 10.6 %; 8, 8.0 %; 16, 9.5 %.
 constexpr int kStripColumns = 8;
 
 // Writes to `out` the numbers of the balls of [k, stop) whose centres lie

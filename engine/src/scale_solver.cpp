@@ -134,7 +134,7 @@ constexpr double kSupportSlope = 0.2;
 // approaches (normal relative velocity below min(target, 0)) stops
 // approaching by a change of the upper ball's velocity alone, along n, as if
 // the lower ball were immovable (Guendelman, Bridson and Fedkiw's shock
-// propagation). Key order runs roughly bottom-up, so one sweep carries the
+// propagation). The cell order runs bottom-up, so one sweep carries the
 // support of the floor up a stack that 8 iterations leave sinking. No bounce
 // is added (the goal is never above 0), spins are untouched (the push is
 // through the centres), and an immovable upper ball is left to the
@@ -267,7 +267,7 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
   // strips share no ball, so the result is bit for bit that of solving them
   // one after another, but consecutive rows no longer wait for each other.
   // Within a strip each row waits for the last one that touched its balls
-  // (key order puts a ball's rows side by side), so one strip at a time
+  // ((a, b) order puts a ball's rows side by side), so one strip at a time
   // leaves the core idle on that chain of loads and stores.
   auto byStrip = [&](int t, auto&& f) {
     for (int parity = 0; parity < 2; ++parity) {

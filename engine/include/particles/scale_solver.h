@@ -104,7 +104,7 @@ class ScaleSolver {
   Grid buildGrid(const ScaleBodies& bodies);
   void findRows(const ScaleBodies& bodies, ThreadPool& pool);
 
-  // This step's pairs (ball, ball or wall) in key order, one list per thread
+  // This step's pairs (ball, ball or wall) in (a, b) order, one list per thread
   // (each thread takes its own range of balls). Each list on its own cache
   // line: side by side, every push_back of one thread evicted the other's
   // vector (measured: the pair search of two threads took 0.73 + 0.69 s where

@@ -143,7 +143,7 @@ struct SolverSettings {
   // passes stop as soon as one moves nothing.
   int scalePositionPasses = 4;
   // Shock propagation in the large-scene path's velocities: after the
-  // iterations, one sweep in key order in which a ball pair stacked along
+  // iterations, one sweep in cell order in which a ball pair stacked along
   // gravity (|n . g/|g|| >= 0.2) that still approaches stops approaching by
   // a change of the upper ball's velocity alone, as if the lower ball were
   // immovable (docs/scale.md, "Shock propagation in velocities"). 8
