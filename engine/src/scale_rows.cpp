@@ -64,9 +64,10 @@ inline bool nearWall(const Vec2& x, double grown, const WallDef& wall, WallHit& 
 // A row's masses and targets, from its bodies (r.a, r.b, numbered in cell
 // order), normal and reach, the distance of the centres (or of the centre
 // from the wall), the mixed material and the scene's forced velocities.
-inline void fillRow(const ScaleSolver::Motion* body, const ScaleSolver::CellBall* cell,
-                    const ScaleBodies& s, const ContactMaterial& m, double dist,
-                    ScaleSolver::Row& r) {
+// Returns the row's bounce (ScaleSolver::bounce_).
+inline double fillRow(const ScaleSolver::Motion* body, const ScaleSolver::CellBall* cell,
+                      const ScaleBodies& s, const ContactMaterial& m, double reach, double dist,
+                      ScaleSolver::Row& r) {
   const ScaleSolver::Motion& a = body[r.a];
   const ScaleSolver::Motion* b = r.b >= 0 ? &body[r.b] : nullptr;
   const double invA = a.invMass, invB = b ? b->invMass : 0.0;
@@ -79,26 +80,29 @@ inline void fillRow(const ScaleSolver::Motion* body, const ScaleSolver::CellBall
   // The approach the bodies brought into the step: what this step's
   // forces added is cancelled, not bounced (docs/physics.md).
   const Vec2 vb = b ? b->velocity : Vec2::Zero();
-  const double gn = (vb - a.velocity).dot(r.normal);
+  const Vec2 n = r.normal();
+  const double gn = (vb - a.velocity).dot(n);
   double forced = 0.0;
   if (!s.forcedVelocity.empty()) {
     const Vec2 fb = b ? s.forcedVelocity[static_cast<std::size_t>(cell[r.b].index)] : Vec2::Zero();
-    forced = (fb - s.forcedVelocity[static_cast<std::size_t>(cell[r.a].index)]).dot(r.normal);
+    forced = (fb - s.forcedVelocity[static_cast<std::size_t>(cell[r.a].index)]).dot(n);
   }
   const double brought = gn - forced;
-  if (dist > r.reach * (1.0 + kTouchSlop)) {
+  double bounce = 0.0;
+  if (dist > reach * (1.0 + kTouchSlop)) {
     // Apart: may approach by at most the gap within the step. If the
     // approach closes the gap, the bodies collide within this step, and
     // the restitution pass gives them their bounce: without it every
     // impact caught early would be perfectly inelastic (an elastic gas
     // of 1,000 balls lost 10 % of its energy in 0.25 s).
-    const double gap = dist - r.reach;
+    const double gap = dist - reach;
     r.target = -gap / s.dt;
-    if (brought * s.dt < -gap) r.bounce = -m.restitution * brought;
+    if (brought * s.dt < -gap) bounce = -m.restitution * brought;
   } else {
     // Touching: bounce the approach brought into the step.
     r.target = brought < 0.0 ? -m.restitution * brought : 0.0;
   }
+  return bounce;
 }
 
 }  // namespace
@@ -272,6 +276,7 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
       slot_.resize(linkStart_.back());
       rows_.resize(linkStart_.back());
       pairs_.resize(linkStart_.back());
+      bounce_.resize(linkStart_.back());
       // Where each thread's rows of each strip start: strip by strip, thread
       // by thread, so that a strip's rows are in (a, b) order (thread t has
       // the t-th range of balls).
@@ -297,25 +302,28 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
       Row r;
       r.a = a;
       r.b = b;
-      double dist = 0.0;
+      double dist = 0.0, reach = 0.0;
       ContactMaterial m;
+      Vec2 normal;
       if (b >= 0) {
         const CellBall& cb = cells[b];
         const Vec2 d = cb.position - ca.position;
-        r.reach = ca.radius + cb.radius;
+        reach = ca.radius + cb.radius;
         dist = std::sqrt(d.squaredNorm());
-        r.normal = dist > 0.0 ? Vec2(d / dist) : Vec2(1.0, 0.0);
+        normal = dist > 0.0 ? Vec2(d / dist) : Vec2(1.0, 0.0);
         m = mixMaterials(s.material[ia], s.material[static_cast<std::size_t>(cb.index)]);
       } else {
         const std::size_t w = static_cast<std::size_t>(-1 - b);
         WallHit hit;
         nearWall(ca.position, ca.radius + margin, s.walls[w], hit);
-        r.reach = ca.radius;
+        reach = ca.radius;
         dist = ca.radius + margin - hit.overlap;
-        r.normal = hit.normal;
+        normal = hit.normal;
         m = mixMaterials(s.material[ia], s.wallMaterial[w]);
       }
-      fillRow(body, cells, s, m, dist, r);
+      r.nx = normal.x();
+      r.ny = normal.y();
+      const double bounce = fillRow(body, cells, s, m, reach, dist, r);
       // Warm start from the last step's row of the same two bodies, if any.
       // The impulses do not depend on which ball is a: swapping a and b
       // turns n and tau (= perp n) around and P on b into P on a.
@@ -337,7 +345,8 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
                             : stripOf_[static_cast<std::size_t>(a)];
       const int pos = count[st]++;
       rows_[static_cast<std::size_t>(pos)] = r;
-      pairs_[static_cast<std::size_t>(pos)] = {a, b, r.reach};
+      pairs_[static_cast<std::size_t>(pos)] = {a, b, reach};
+      bounce_[static_cast<std::size_t>(pos)] = bounce;
       slot[k] = pos;
     }
   });

@@ -22,7 +22,8 @@ using scale::part;
 // takes nothing). Signs as in contact_impulse_impl.h: b gets +P, a gets -P,
 // and both spins change by -r dt / J.
 inline void applyRow(ScaleSolver::Motion* m, const ScaleSolver::Row& r, double dn, double dt) {
-  const Vec2 p = dn * r.normal + dt * perpLeft(r.normal);
+  const Vec2 n = r.normal();
+  const Vec2 p = dn * n + dt * perpLeft(n);
   ScaleSolver::Motion& a = m[r.a];
   a.velocity -= a.invMass * p;
   a.angularVelocity -= a.radius * dt * a.invInertia;
@@ -55,7 +56,7 @@ inline double frictionChange(ScaleSolver::Row& r, double gt) {
 // every load and store saved shortens that chain (about 7 % of the 10,000-ball
 // pile's step, bit-identical results).
 inline void solveBallRow(ScaleSolver::Motion& a, ScaleSolver::Motion& b, ScaleSolver::Row& r) {
-  const Vec2 n = r.normal, tau = perpLeft(n);
+  const Vec2 n = r.normal(), tau = perpLeft(n);
   Vec2 va = a.velocity, vb = b.velocity;
   // A row without impulse whose bodies already part fast enough (most
   // speculative rows): friction bounded by mu * 0 and a normal impulse
@@ -83,7 +84,7 @@ inline void solveBallRow(ScaleSolver::Motion& a, ScaleSolver::Motion& b, ScaleSo
 
 // The same for a ball and a wall, which has no velocity and takes nothing.
 inline void solveWallRow(ScaleSolver::Motion& a, ScaleSolver::Row& r) {
-  const Vec2 n = r.normal, tau = perpLeft(n);
+  const Vec2 n = r.normal(), tau = perpLeft(n);
   Vec2 va = a.velocity;
   if (r.lambdaN == 0.0 && r.lambdaT == 0.0 && -va.dot(n) >= r.target) return;
   double wa = a.angularVelocity;
@@ -112,11 +113,11 @@ inline void solveRow(ScaleSolver::Motion* m, ScaleSolver::Row& r) {
 // 0) and needed a normal impulse to do so: raises the normal relative
 // velocity to the bounce, with the accumulated impulse kept >= 0. Touching
 // rows already have their bounce in their target.
-inline void restituteRow(ScaleSolver::Motion* m, ScaleSolver::Row& r) {
-  if (r.bounce <= 0.0 || r.lambdaN <= 0.0) return;
+inline void restituteRow(ScaleSolver::Motion* m, ScaleSolver::Row& r, double bounce) {
+  if (bounce <= 0.0 || r.lambdaN <= 0.0) return;
   const Vec2 vb = r.b >= 0 ? m[r.b].velocity : Vec2::Zero();
-  const double gn = (vb - m[r.a].velocity).dot(r.normal);
-  const double ln = std::max(0.0, r.lambdaN + (r.bounce - gn) * r.massN);
+  const double gn = (vb - m[r.a].velocity).dot(r.normal());
+  const double ln = std::max(0.0, r.lambdaN + (bounce - gn) * r.massN);
   const double dn = ln - r.lambdaN;
   r.lambdaN = ln;
   if (dn != 0.0) applyRow(m, r, dn, 0.0);
@@ -142,16 +143,17 @@ constexpr double kSupportSlope = 0.2;
 // reaction, as with a floor.
 inline void supportRow(ScaleSolver::Motion* m, const ScaleSolver::Row& r, Vec2 down) {
   if (r.b < 0) return;
-  const double below = r.normal.dot(down);  // > 0: b lies below a
+  const Vec2 n = r.normal();
+  const double below = n.dot(down);  // > 0: b lies below a
   if (std::abs(below) < kSupportSlope) return;
   ScaleSolver::Motion& upper = below > 0.0 ? m[r.a] : m[r.b];
   if (upper.invMass == 0.0) return;
   const Vec2 va = m[r.a].velocity, vb = m[r.b].velocity;
-  const double gn = (vb - va).dot(r.normal);
+  const double gn = (vb - va).dot(n);
   const double goal = std::min(r.target, 0.0);
   if (gn >= goal) return;
   // a moves along -n, b along +n: either way the pair parts by goal - gn.
-  upper.velocity += (below > 0.0 ? gn - goal : goal - gn) * r.normal;
+  upper.velocity += (below > 0.0 ? gn - goal : goal - gn) * n;
 }
 
 // Moves a row's bodies apart by their whole overlap, shared by inverse mass
@@ -220,7 +222,7 @@ void ScaleSolver::reset() {
 std::size_t ScaleSolver::memoryBytes() const {
   std::size_t bytes =
       sizeof(Row) * rows_.capacity() + sizeof(Pair) * pairs_.capacity() +
-      sizeof(Motion) * motion_.capacity() +
+      sizeof(double) * bounce_.capacity() + sizeof(Motion) * motion_.capacity() +
       sizeof(int) * (stripStart_.capacity() + stripCount_.capacity()) +
       sizeof(int) * (lastStart_.capacity() + lastOther_.capacity() + lastOf_.capacity()) +
       sizeof(int) * stripOf_.capacity() + sizeof(int) * slot_.capacity() +
@@ -312,7 +314,9 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
     });
     for (int it = 0; it < iterations; ++it)
       byStrip(t, [&](std::size_t k) { solveRow(m, rows_[k]); });
-    byStrip(t, [&](std::size_t k) { restituteRow(m, rows_[k]); });
+    byStrip(t, [&](std::size_t k) {
+      if (bounce_[k] > 0.0) restituteRow(m, rows_[k], bounce_[k]);
+    });
     if (supportSweep) byStrip(t, [&](std::size_t k) { supportRow(m, rows_[k], s.down); });
 
     for (std::size_t k = b; k < e; ++k) ball[k].position += s.dt * m[k].velocity;
@@ -382,7 +386,7 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
       ImpactEvent e{ball[r.a].index,
                     wall ? -1 - r.b : ball[r.b].index,
                     wall,
-                    r.normal,
+                    r.normal(),
                     r.lambdaN,
                     r.lambdaT,
                     r.friction == 0.0 ? 0.0 : r.friction * r.lambdaN};
