@@ -204,6 +204,7 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
   stripOf_.resize(n);
   lastOf_.resize(n);
   motion_.resize(n);
+  invMass_.resize(n);
   stripCount_.assign(static_cast<std::size_t>(threads) * stride, 0);
   stripStart_.assign(width, 0);
   found_.resize(static_cast<std::size_t>(threads));
@@ -219,6 +220,7 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
       // Each ball's velocity and mass properties in one place: a row touches
       // two of them, in an order the strips decide.
       body[k] = {s.velocity[i], s.angularVelocity[i], s.invMass[i], s.invInertia[i], s.radius[i]};
+      invMass_[k] = s.invMass[i];
       lastOf_[k] = warm ? lastNumberOf_[i] : -1;
     }
     pool.sync();

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <tuple>
 
 #include "particles/broad_phase.h"
@@ -11,6 +13,9 @@
 
 namespace particles {
 namespace {
+
+// Strips a thread solves interleaved at a time (byStrip in ScaleSolver::step).
+constexpr int kInterleave = 8;
 
 // The same rounding floor as the small-scene overlap removal (world.cpp).
 constexpr double kOverlapTolerance = 1e-9;
@@ -166,9 +171,9 @@ inline void supportRow(ScaleSolver::Motion* m, const ScaleSolver::Row& r, Vec2 d
 // pass, and shallow piles crept for ever instead of coming to rest
 // (docs/scale.md, "Shock propagation").
 // Returns the overlap found (m, <= 0 when apart). Balls are numbered in
-// cell order: `ball` holds their positions, `body` their masses.
-inline double projectRow(ScaleSolver::CellBall* ball, const ScaleSolver::Motion* body,
-                         const ScaleBodies& s, const ScaleSolver::Pair& r, double shock) {
+// cell order: `ball` holds their positions, `invMass` their inverse masses.
+inline double projectRow(ScaleSolver::CellBall* ball, const double* invMass, const ScaleBodies& s,
+                         const ScaleSolver::Pair& r, double shock) {
   const int a = r.a;
   Vec2& xa = ball[a].position;
   if (r.b < 0) {
@@ -189,7 +194,7 @@ inline double projectRow(ScaleSolver::CellBall* ball, const ScaleSolver::Motion*
   const double overlap = r.reach - dist;
   if (overlap <= kOverlapTolerance * r.reach) return overlap;
   const Vec2 n = dist > 0.0 ? Vec2(d / dist) : Vec2(1.0, 0.0);
-  const double wa = body[a].invMass, wb = body[b].invMass;
+  const double wa = invMass[a], wb = invMass[b];
   if (shock > 0.0) {
     const double below = n.dot(s.down);  // > 0: b lies below a
     const double lowA = wa * (1.0 + shock * std::min(0.0, below));
@@ -222,7 +227,8 @@ void ScaleSolver::reset() {
 std::size_t ScaleSolver::memoryBytes() const {
   std::size_t bytes =
       sizeof(Row) * rows_.capacity() + sizeof(Pair) * pairs_.capacity() +
-      sizeof(double) * bounce_.capacity() + sizeof(Motion) * motion_.capacity() +
+      sizeof(double) * (bounce_.capacity() + invMass_.capacity()) +
+      sizeof(Motion) * motion_.capacity() +
       sizeof(int) * (stripStart_.capacity() + stripCount_.capacity()) +
       sizeof(int) * (lastStart_.capacity() + lastOther_.capacity() + lastOf_.capacity()) +
       sizeof(int) * stripOf_.capacity() + sizeof(int) * slot_.capacity() +
@@ -270,32 +276,44 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
   // one after another, but consecutive rows no longer wait for each other.
   // Within a strip each row waits for the last one that touched its balls
   // ((a, b) order puts a ball's rows side by side), so one strip at a time
-  // leaves the core idle on that chain of loads and stores.
+  // leaves the core idle on that chain of loads and stores. At most
+  // kInterleave strips at a time, though: at N = 100,000 (16 strips of a
+  // parity on one thread) taking all of them at once was 15-20 % slower in
+  // the iterations than taking them 8 by 8, too many streams of rows and balls
+  // at once for the prefetchers; at N = 10,000 (7) it makes no difference.
   auto byStrip = [&](int t, auto&& f) {
     for (int parity = 0; parity < 2; ++parity) {
-      std::array<std::size_t, kMaxStrips> at{}, end{};
+      std::array<std::size_t, kMaxStrips> from{}, to{};
       // Thread t takes a block of neighbouring strips, so that the two
       // threads share only the balls along one strip border.
       const int count = (strips - parity + 1) / 2;
-      int active = 0, index = 0;
+      int mine = 0, index = 0;
       for (int st = parity; st < strips; st += 2, ++index) {
         if (index * threads / count != t) continue;
         const std::size_t i = static_cast<std::size_t>(st);
-        at[static_cast<std::size_t>(active)] = static_cast<std::size_t>(stripStart_[i]);
-        end[static_cast<std::size_t>(active)] = static_cast<std::size_t>(stripStart_[i + 1]);
-        if (at[static_cast<std::size_t>(active)] < end[static_cast<std::size_t>(active)]) ++active;
+        from[static_cast<std::size_t>(mine)] = static_cast<std::size_t>(stripStart_[i]);
+        to[static_cast<std::size_t>(mine)] = static_cast<std::size_t>(stripStart_[i + 1]);
+        if (from[static_cast<std::size_t>(mine)] < to[static_cast<std::size_t>(mine)]) ++mine;
       }
-      while (active > 0) {
-        for (int j = 0; j < active;) {
-          const std::size_t u = static_cast<std::size_t>(j);
-          f(at[u]++);
-          if (at[u] == end[u]) {
-            // This strip is done: the last active one takes its place.
-            --active;
-            at[u] = at[static_cast<std::size_t>(active)];
-            end[u] = end[static_cast<std::size_t>(active)];
-          } else {
-            ++j;
+      for (int g = 0; g < mine; g += kInterleave) {
+        std::array<std::size_t, kMaxStrips> at{}, end{};
+        int active = 0;
+        for (int u = g; u < std::min(mine, g + kInterleave); ++u, ++active) {
+          at[static_cast<std::size_t>(active)] = from[static_cast<std::size_t>(u)];
+          end[static_cast<std::size_t>(active)] = to[static_cast<std::size_t>(u)];
+        }
+        while (active > 0) {
+          for (int j = 0; j < active;) {
+            const std::size_t u = static_cast<std::size_t>(j);
+            f(at[u]++);
+            if (at[u] == end[u]) {
+              // This strip is done: the last active one takes its place.
+              --active;
+              at[u] = at[static_cast<std::size_t>(active)];
+              end[u] = end[static_cast<std::size_t>(active)];
+            } else {
+              ++j;
+            }
           }
         }
       }
@@ -328,7 +346,7 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
       mine = 0;
       byStrip(t, [&](std::size_t k) {
         const Pair& r = pairs_[k];
-        const double overlap = projectRow(ball, m, s, r, shock);
+        const double overlap = projectRow(ball, invMass_.data(), s, r, shock);
         if (pass == 0) deepest = std::max(deepest, overlap);
         if (overlap > kOverlapTolerance * r.reach) mine = 1;
       });
