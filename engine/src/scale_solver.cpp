@@ -278,9 +278,10 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
   // ((a, b) order puts a ball's rows side by side), so one strip at a time
   // leaves the core idle on that chain of loads and stores. At most
   // kInterleave strips at a time, though: at N = 100,000 (16 strips of a
-  // parity on one thread) taking all of them at once was 15-20 % slower in
-  // the iterations than taking them 8 by 8, too many streams of rows and balls
-  // at once for the prefetchers; at N = 10,000 (7) it makes no difference.
+  // parity on one thread) stage timers gave the iterations 15-20 % less time
+  // taking them 8 by 8 than all 16 at once (fewer streams of rows and balls
+  // for the prefetchers), but whole-step A/B pairs were within the host's
+  // noise; at N = 10,000 (7 strips) nothing changes. Same bits either way.
   auto byStrip = [&](int t, auto&& f) {
     for (int parity = 0; parity < 2; ++parity) {
       std::array<std::size_t, kMaxStrips> from{}, to{};
