@@ -9,6 +9,7 @@
 #include <random>
 #include <vector>
 
+#include "large_path_scene.h"
 #include "particles/pile/pile_scene.h"
 #include "particles/world.h"
 
@@ -53,20 +54,10 @@ TEST(ScaleOrder, ARelistedPileEndsInTheSameStateBallForBall) {
 // stack's balls, so their numbers change under the warm start.
 TEST(ScaleOrder, TheWarmStartFollowsBallsWhoseNumbersChange) {
   constexpr double kRadius = 0.5, kGravity = 10.0, kDt = 1e-2;
-  SceneDef s;
-  s.dt = kDt;
-  s.gravity = {0.0, -kGravity};
-  s.contact = {0.0, 0.5};
-  s.walls = boxWalls({0.0, 0.0}, {10.0, 12.0});
-  for (int k = 0; k < 4; ++k) {
-    BallDef b;
-    b.position = k < 3 ? Vec2(8.0, (1.0 + 2.0 * k) * kRadius) : Vec2(1.0, 9.0);
-    b.radius = kRadius;
-    b.mass = 1.0;
-    s.balls.push_back(b);
-  }
-  s.solver.scaleThreshold = 0;
-  s.solver.scaleThresholdUnderGravity = 0;
+  SceneDef s = test::largePathScene(kDt, kGravity, {0.0, 0.0}, {10.0, 12.0});
+  test::addStack(s, 8.0, 3, kRadius);
+  test::addStack(s, 1.0, 1, kRadius);
+  s.balls[3].position.y() = 9.0;  // the faller
   s.solver.scaleVelocityIterations = 4;
   s.solver.scaleVelocityShock = false;
   World world(s);

@@ -13,6 +13,7 @@
 // exactly, and without it balls 1 and 2 keep -g dt.
 #include <gtest/gtest.h>
 
+#include "large_path_scene.h"
 #include "particles/world.h"
 
 namespace particles {
@@ -23,20 +24,8 @@ constexpr double kGravity = 10.0;  // m/s^2
 constexpr double kDt = 1e-2;       // s
 
 SceneDef stack(bool sweep) {
-  SceneDef s;
-  s.dt = kDt;
-  s.gravity = {0.0, -kGravity};
-  s.contact = {0.0, 0.5};
-  s.walls = boxWalls({-10.0, 0.0}, {10.0, 10.0});
-  for (int k = 0; k < 3; ++k) {
-    BallDef b;
-    b.position = {0.0, (1.0 + 2.0 * k) * kRadius};
-    b.radius = kRadius;
-    b.mass = 1.0;
-    s.balls.push_back(b);
-  }
-  s.solver.scaleThreshold = 0;
-  s.solver.scaleThresholdUnderGravity = 0;
+  SceneDef s = test::largePathScene(kDt, kGravity, {-10.0, 0.0}, {10.0, 10.0});
+  test::addStack(s, 0.0, 3, kRadius);
   s.solver.scaleVelocityIterations = 1;
   s.solver.scaleVelocityShock = sweep;
   return s;
