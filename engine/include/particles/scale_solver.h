@@ -75,7 +75,7 @@ class ScaleSolver {
   };
 
   // A ball in the grid's cell order: cells bottom row first, left to right,
-  // and by scene index within a cell. The solver numbers the balls in this
+  // and within a cell by y, then x (then scene index). The solver numbers the balls in this
   // order for the whole step, so that its Gauss-Seidel order runs bottom-up
   // whatever the scene's numbering, and balls that touch lie close in memory.
   struct CellBall {
@@ -124,7 +124,7 @@ class ScaleSolver {
   // restitution pass for this row.
   std::vector<double> bounce_;
   std::vector<int> stripStart_;  // rows_ of strip k: [stripStart_[k], stripStart_[k+1])
-  std::vector<int> stripOf_;     // per ball: its vertical strip
+  std::vector<int> stripOf_;     // per ball (cell order): its vertical strip
   std::vector<Motion> motion_;   // per ball, during the velocity iterations
   // Per ball, 1/kg: what the overlap removal reads of the masses, 8 bytes a
   // ball instead of a Motion's 48 (at N = 100,000 it stays in the cache).
