@@ -30,12 +30,11 @@ constexpr double kMarginFraction = 0.2;
 // 10,000; 4, 10.6 %; 8, 8.0 %; 16, 9.5 %.
 constexpr int kStripColumns = 8;
 
-// Writes to `out` the numbers of the balls of [k, stop) whose centres lie
-// within ra + their radius + margin of xa (`first` is the number of the
-// ball at `base`); returns the new end. `out` must have room for every
-// candidate. A function of its own so that the loop's values stay in
-// registers (in the pair search's lambda every captured value was reloaded
-// after each store).
+// Writes to `out` the numbers of the balls base[begin, end) whose centres
+// lie within ra + their radius + margin of xa; returns the new end. `out`
+// must have room for every candidate. A function of its own so that the
+// loop's values stay in registers (in the pair search's lambda every
+// captured value was reloaded after each store).
 inline int* nearBalls(const ScaleSolver::CellBall* base, int begin, int end, Vec2 xa, double ra,
                       double margin, int* out) {
   // Without branches: whether a candidate is kept is as good as random, and
@@ -186,8 +185,9 @@ ScaleSolver::Grid ScaleSolver::buildGrid(const ScaleBodies& s) {
 void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
   const std::size_t n = s.position.size();
   const auto [cols, rows, margin] = buildGrid(s);
-  // The last step's impulses can be matched only if it had the same balls.
-  const bool warm = lastCount_ == n && lastNumberOf_.size() == n;
+  // The last step's impulses can be matched only if it had the same balls
+  // (reset() empties its numbering).
+  const bool warm = lastNumberOf_.size() == n;
 
   // Rows are split into vertical strips of kStripColumns grid columns, so a
   // row joins balls of the same or of neighbouring strips; a row belongs to
@@ -337,8 +337,7 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
       // The impulses do not depend on which ball is a: swapping a and b
       // turns n and tau (= perp n) around and P on b into P on a.
       const int la = lastOf_[static_cast<std::size_t>(a)];
-      const int lb =
-          b >= 0 ? lastOf_[static_cast<std::size_t>(b)] : static_cast<int>(lastCount_) + (-1 - b);
+      const int lb = b >= 0 ? lastOf_[static_cast<std::size_t>(b)] : static_cast<int>(n) + (-1 - b);
       if (la >= 0 && lb >= 0) {
         const std::size_t lo = static_cast<std::size_t>(b >= 0 ? std::min(la, lb) : la);
         const int other = b >= 0 ? std::max(la, lb) : lb;

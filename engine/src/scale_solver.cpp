@@ -217,7 +217,6 @@ inline double projectRow(ScaleSolver::CellBall* ball, const double* invMass, con
 }  // namespace
 
 void ScaleSolver::reset() {
-  lastCount_ = 0;
   lastNumberOf_.clear();
   numberOf_.clear();
 }
@@ -390,7 +389,6 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
     }
     if (t == threads - 1) lastStart_[n] = static_cast<int>(slot_.size());
   });
-  lastCount_ = n;
   if (impacts) {
     // In the scene's numbering, with a < b and in (a, b) order, as the small
     // path reports them: swapping a and b turns the normal around and leaves

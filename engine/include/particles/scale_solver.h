@@ -134,10 +134,9 @@ class ScaleSolver {
   std::vector<int> stripCount_;         // per thread and strip: rows, then where they go
   // The last step's accumulated impulses, by the last step's numbering: the
   // rows of ball a are [lastStart_[a], lastStart_[a + 1]), each with its
-  // partner (lastCount_ + w for wall w).
+  // partner (the ball count + w for wall w; warm starts need the same count).
   std::vector<int> lastStart_, lastOther_;
   std::vector<double> lastN_, lastT_;
-  std::size_t lastCount_ = 0;
   std::vector<int> lastOf_;  // per ball: its number in the last step, or -1
   // Grid (counting sort of balls into cells).
   std::vector<int> cellStart_, ballCell_;
