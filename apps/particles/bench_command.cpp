@@ -17,9 +17,9 @@ namespace particles::cli {
 namespace {
 
 // clang-format off
-constexpr std::array<std::string_view, 11> kScaleOnly{
+constexpr std::array<std::string_view, 12> kScaleOnly{
     "--n", "--threads", "--poly", "--steps", "--no-box2d", "--iterations", "--position-passes",
-    "--shock", "--seed", "--seeds", "--no-velocity-shock"};
+    "--relaxation", "--shock", "--seed", "--seeds", "--no-velocity-shock"};
 // clang-format on
 constexpr std::array<std::string_view, 6> kTimestepOnly{
     "--repeats", "--full", "--scene", "--skip-csv", "--no-skip-study", "--report"};

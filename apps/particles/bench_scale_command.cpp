@@ -236,9 +236,15 @@ void addScaleBenchOptions(CLI::App& bench, ScaleBenchOptions& o) {
   bench
       .add_option("--position-passes", o.positionPasses,
                   "Engine overlap-removal passes per step on the large-scene path (default: "
-                  "SolverSettings::scalePositionPasses, 4)")
+                  "SolverSettings::scalePositionPasses, 2)")
       ->type_name("P")
       ->check(integerInRange(1, 10000));
+  bench
+      .add_option("--relaxation", o.relaxation,
+                  "Engine over-relaxation of the normal impulses on the large-scene path, 1 "
+                  "(off) to 1.99 (default: SolverSettings::scaleOverRelaxation, 1.8)")
+      ->type_name("W")
+      ->check(finiteInRange(1.0, 1.99));
   bench
       .add_option("--shock", o.shock,
                   "Engine shock propagation in the overlap removal, 0..1 (default: "
@@ -295,6 +301,7 @@ int runScaleBench(const ScaleBenchOptions& o) {
         if (o.iterations > 0) scene.solver.scaleVelocityIterations = o.iterations;
         if (o.positionPasses > 0) scene.solver.scalePositionPasses = o.positionPasses;
         if (o.shock >= 0.0) scene.solver.scaleShockPropagation = o.shock;
+        if (o.relaxation > 0.0) scene.solver.scaleOverRelaxation = o.relaxation;
         if (o.noVelocityShock) scene.solver.scaleVelocityShock = false;
         World world(scene);
         RunFigures f = measure(world, scene, o.steps);

@@ -51,14 +51,20 @@ inline double frictionChange(ScaleSolver::Row& r, double gt) {
   return dt;
 }
 
-// One projected Gauss-Seidel update of a row's accumulated impulses:
-// friction first (bounded by the normal impulse it has so far), then the
-// normal impulse, which never pulls (lambdaN >= 0) and brings the normal
-// relative velocity up to at least `target`. The balls are read once and
-// written once: a row waits for the last row that touched its balls, so
-// every load and store saved shortens that chain (about 7 % of the 10,000-ball
-// pile's step, bit-identical results).
-inline void solveBallRow(ScaleSolver::Motion& a, ScaleSolver::Motion& b, ScaleSolver::Row& r) {
+// One projected Gauss-Seidel update of a row's accumulated impulses: the
+// friction (bounded by the normal impulse it has so far) and the normal
+// impulse, which never pulls (lambdaN >= 0) and brings the normal relative
+// velocity up to at least `target`. The normal change is over-relaxed by
+// `relax` (SolverSettings::scaleOverRelaxation). In the last iteration
+// (kLast) the normal impulse comes first and is not over-relaxed: one such
+// update makes an isolated row's normal impulse exact, and the friction
+// then has its exact Coulomb bound. The balls are read once and written
+// once: a row waits for the last row that touched its balls, so every load
+// and store saved shortens that chain (about 7 % of the 10,000-ball pile's
+// step, bit-identical results).
+template <bool kLast>
+inline void solveBallRow(ScaleSolver::Motion& a, ScaleSolver::Motion& b, ScaleSolver::Row& r,
+                         double relax) {
   const Vec2 n = r.normal(), tau = perpLeft(n);
   Vec2 va = a.velocity, vb = b.velocity;
   // A row without impulse whose bodies already part fast enough (most
@@ -66,7 +72,8 @@ inline void solveBallRow(ScaleSolver::Motion& a, ScaleSolver::Motion& b, ScaleSo
   // clamped at 0 would change nothing, so nothing is computed or stored.
   if (r.lambdaN == 0.0 && r.lambdaT == 0.0 && (vb - va).dot(n) >= r.target) return;
   double wa = a.angularVelocity, wb = b.angularVelocity;
-  if (r.friction > 0.0) {
+  const auto friction = [&] {
+    if (r.friction <= 0.0) return;
     const double gt = (vb - va).dot(tau) - wb * b.radius - wa * a.radius;
     const double dt = frictionChange(r, gt);
     const Vec2 p = dt * tau;
@@ -74,42 +81,66 @@ inline void solveBallRow(ScaleSolver::Motion& a, ScaleSolver::Motion& b, ScaleSo
     wa -= a.radius * dt * a.invInertia;
     vb += b.invMass * p;
     wb -= b.radius * dt * b.invInertia;
+  };
+  const auto normal = [&](double w) {
+    const double gn = (vb - va).dot(n);
+    const double ln = std::max(0.0, r.lambdaN + w * (r.target - gn) * r.massN);
+    const Vec2 p = (ln - r.lambdaN) * n;
+    r.lambdaN = ln;
+    va -= a.invMass * p;
+    vb += b.invMass * p;
+  };
+  if constexpr (kLast) {
+    normal(1.0);
+    friction();
+  } else {
+    friction();
+    normal(relax);
   }
-  const double gn = (vb - va).dot(n);
-  const double ln = std::max(0.0, r.lambdaN + (r.target - gn) * r.massN);
-  const Vec2 p = (ln - r.lambdaN) * n;
-  r.lambdaN = ln;
-  a.velocity = va - a.invMass * p;
-  b.velocity = vb + b.invMass * p;
+  a.velocity = va;
+  b.velocity = vb;
   a.angularVelocity = wa;
   b.angularVelocity = wb;
 }
 
 // The same for a ball and a wall, which has no velocity and takes nothing.
-inline void solveWallRow(ScaleSolver::Motion& a, ScaleSolver::Row& r) {
+template <bool kLast>
+inline void solveWallRow(ScaleSolver::Motion& a, ScaleSolver::Row& r, double relax) {
   const Vec2 n = r.normal(), tau = perpLeft(n);
   Vec2 va = a.velocity;
   if (r.lambdaN == 0.0 && r.lambdaT == 0.0 && -va.dot(n) >= r.target) return;
   double wa = a.angularVelocity;
-  if (r.friction > 0.0) {
+  const auto friction = [&] {
+    if (r.friction <= 0.0) return;
     const double gt = -va.dot(tau) - wa * a.radius;
     const double dt = frictionChange(r, gt);
     va -= a.invMass * (dt * tau);
     wa -= a.radius * dt * a.invInertia;
+  };
+  const auto normal = [&](double w) {
+    const double gn = -va.dot(n);
+    const double ln = std::max(0.0, r.lambdaN + w * (r.target - gn) * r.massN);
+    const double dn = ln - r.lambdaN;
+    r.lambdaN = ln;
+    va -= a.invMass * (dn * n);
+  };
+  if constexpr (kLast) {
+    normal(1.0);
+    friction();
+  } else {
+    friction();
+    normal(relax);
   }
-  const double gn = -va.dot(n);
-  const double ln = std::max(0.0, r.lambdaN + (r.target - gn) * r.massN);
-  const double dn = ln - r.lambdaN;
-  r.lambdaN = ln;
-  a.velocity = va - a.invMass * (dn * n);
+  a.velocity = va;
   a.angularVelocity = wa;
 }
 
-inline void solveRow(ScaleSolver::Motion* m, ScaleSolver::Row& r) {
+template <bool kLast>
+inline void solveRow(ScaleSolver::Motion* m, ScaleSolver::Row& r, double relax) {
   if (r.b >= 0)
-    solveBallRow(m[r.a], m[r.b], r);
+    solveBallRow<kLast>(m[r.a], m[r.b], r, relax);
   else
-    solveWallRow(m[r.a], r);
+    solveWallRow<kLast>(m[r.a], r, relax);
 }
 
 // The restitution pass for a speculative row that closed its gap (bounce >
@@ -251,6 +282,10 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
 
   const int iterations = std::max(1, settings.scaleVelocityIterations);
   const int passes = std::max(1, settings.scalePositionPasses);
+  // Below 1 it would be under-relaxation, from 2 on Gauss-Seidel diverges.
+  const double relax = std::isfinite(settings.scaleOverRelaxation)
+                           ? std::clamp(settings.scaleOverRelaxation, 1.0, 1.99)
+                           : 1.0;
   const double shock = std::clamp(settings.scaleShockPropagation, 0.0, 1.0);
   // Without gravity there is no "upper" ball: no support sweep.
   const bool supportSweep = settings.scaleVelocityShock && s.down.squaredNorm() > 0.0;
@@ -328,8 +363,9 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
       Row& r = rows_[k];
       if (r.lambdaN != 0.0 || r.lambdaT != 0.0) applyRow(m, r, r.lambdaN, r.lambdaT);
     });
-    for (int it = 0; it < iterations; ++it)
-      byStrip(t, [&](std::size_t k) { solveRow(m, rows_[k]); });
+    for (int it = 0; it + 1 < iterations; ++it)
+      byStrip(t, [&](std::size_t k) { solveRow<false>(m, rows_[k], relax); });
+    byStrip(t, [&](std::size_t k) { solveRow<true>(m, rows_[k], 1.0); });
     byStrip(t, [&](std::size_t k) {
       if (bounce_[k] > 0.0) restituteRow(m, rows_[k], bounce_[k]);
     });

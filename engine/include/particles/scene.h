@@ -139,9 +139,26 @@ struct SolverSettings {
   int scaleParallelFrom = 5000;
   // Velocity iterations per step of the large-scene path (count).
   int scaleVelocityIterations = 8;
+  // Over-relaxation of the large-scene path's normal impulses
+  // (dimensionless, 1 <= w < 2; docs/scale.md, "Over-relaxation"): every
+  // velocity iteration but the last changes a row's accumulated normal
+  // impulse by w times the Gauss-Seidel change (successive over-relaxation,
+  // still clamped at >= 0). The last iteration is plain (w = 1) and takes
+  // the normal impulse before the friction, so an isolated contact still
+  // ends with its exact impulses. A deep pile carries its weight to the
+  // floor in far fewer iterations. Measured over 8 seeds of the 10,000 pile
+  // at step 600 (with 2 overlap-removal passes): the mean largest overlap
+  // 2.23 -> 0.44 % of the radius (worst 3.19 -> 1.01 %), kinetic energy
+  // 82 -> 23 J; polydisperse 3.33 -> 0.22 %, 19 -> 1.6 J. 1 turns it off.
+  // A stack solved with 4 iterations or fewer can keep bouncing with w >=
+  // 1.7 (the few plain updates do not undo the overshoot).
+  double scaleOverRelaxation = 1.8;
   // Upper bound on overlap-removal passes of the large-scene path (count);
-  // passes stop as soon as one moves nothing.
-  int scalePositionPasses = 4;
+  // passes stop as soon as one moves nothing. 2, not 4, since the
+  // over-relaxed iterations leave little overlap: at w = 1.8, 4 passes gave
+  // the 10,000 pile 0.39 % (worst 0.97 %) against 0.44 % (1.01 %) for 2,
+  // and each pass costs about 5 % of a step (docs/scale.md).
+  int scalePositionPasses = 2;
   // Shock propagation in the large-scene path's velocities: after the
   // iterations, one sweep in cell order in which a ball pair stacked along
   // gravity (|n . g/|g|| >= 0.2) that still approaches stops approaching by
