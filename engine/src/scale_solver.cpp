@@ -262,7 +262,8 @@ std::size_t ScaleSolver::memoryBytes() const {
       sizeof(int) * stripOf_.capacity() + sizeof(int) * slot_.capacity() +
       sizeof(std::size_t) * linkStart_.capacity() +
       sizeof(double) * (lastN_.capacity() + lastT_.capacity()) +
-      sizeof(int) * (cellStart_.capacity() + ballCell_.capacity() + cellOf_.capacity()) +
+      sizeof(int) * (cellStart_.capacity() + ballCell_.capacity() + cellOf_.capacity() +
+                     cellCount_.capacity()) +
       sizeof(int) * (numberOf_.capacity() + lastNumberOf_.capacity()) +
       sizeof(CellBall) * cellBalls_.capacity() + sizeof(ThreadLinks) * found_.capacity();
   for (const ThreadLinks& f : found_) bytes += sizeof(Link) * f.links.capacity();

@@ -100,7 +100,7 @@ class ScaleSolver {
     int rows = 1;
     double margin = 0.0;
   };
-  Grid buildGrid(const ScaleBodies& bodies);
+  Grid buildGrid(const ScaleBodies& bodies, ThreadPool& pool);
   void findRows(const ScaleBodies& bodies, ThreadPool& pool);
 
   // This step's pairs (ball, ball or wall) in (a, b) order, one list per thread
@@ -140,6 +140,9 @@ class ScaleSolver {
   std::vector<int> lastOf_;  // per ball: its number in the last step, or -1
   // Grid (counting sort of balls into cells).
   std::vector<int> cellStart_, ballCell_;
+  // Per thread and cell: the thread's balls in the cell, then where the
+  // first of them goes (the threads share the counting sort).
+  std::vector<int> cellCount_;
   std::vector<int> cellOf_;          // per ball (cell order): its cell
   std::vector<CellBall> cellBalls_;  // the balls in cell order
   // Per scene index: the ball's number in this step's and the last step's
