@@ -51,6 +51,20 @@ inline double frictionChange(ScaleSolver::Row& r, double gt) {
   return dt;
 }
 
+// A row's two updates in their order: the friction, then the normal impulse
+// over-relaxed by `relax`; in the last iteration (kLast) the plain normal
+// impulse first (solveBallRow says why).
+template <bool kLast, typename Friction, typename Normal>
+inline void inOrder(Friction&& friction, Normal&& normal, double relax) {
+  if constexpr (kLast) {
+    normal(1.0);
+    friction();
+  } else {
+    friction();
+    normal(relax);
+  }
+}
+
 // One projected Gauss-Seidel update of a row's accumulated impulses: the
 // friction (bounded by the normal impulse it has so far) and the normal
 // impulse, which never pulls (lambdaN >= 0) and brings the normal relative
@@ -90,13 +104,7 @@ inline void solveBallRow(ScaleSolver::Motion& a, ScaleSolver::Motion& b, ScaleSo
     va -= a.invMass * p;
     vb += b.invMass * p;
   };
-  if constexpr (kLast) {
-    normal(1.0);
-    friction();
-  } else {
-    friction();
-    normal(relax);
-  }
+  inOrder<kLast>(friction, normal, relax);
   a.velocity = va;
   b.velocity = vb;
   a.angularVelocity = wa;
@@ -124,13 +132,7 @@ inline void solveWallRow(ScaleSolver::Motion& a, ScaleSolver::Row& r, double rel
     r.lambdaN = ln;
     va -= a.invMass * (dn * n);
   };
-  if constexpr (kLast) {
-    normal(1.0);
-    friction();
-  } else {
-    friction();
-    normal(relax);
-  }
+  inOrder<kLast>(friction, normal, relax);
   a.velocity = va;
   a.angularVelocity = wa;
 }
