@@ -43,17 +43,6 @@ struct RunFigures {
   bool finite = true;
 };
 
-std::vector<BallState> ballsOf(const World& w) {
-  std::vector<BallState> b(w.ballCount());
-  for (std::size_t i = 0; i < b.size(); ++i) b[i] = w.ball(i);
-  return b;
-}
-std::vector<BallState> ballsOf(const reference::Box2DWorld& w) {
-  std::vector<BallState> b(w.ballCount());
-  for (std::size_t i = 0; i < b.size(); ++i) b[i] = w.ball(i);
-  return b;
-}
-
 template <typename W>
 RunFigures measure(W& world, const SceneDef& scene, long long steps) {
   using Clock = std::chrono::steady_clock;
@@ -67,14 +56,14 @@ RunFigures measure(W& world, const SceneDef& scene, long long steps) {
     const Clock::time_point t0 = Clock::now();
     world.step();
     seconds[s < kPhaseSplit ? 0 : 1] += std::chrono::duration<double>(Clock::now() - t0).count();
-    energy.push_back(pile::kineticEnergy(ballsOf(world), scene.balls));
+    energy.push_back(pile::kineticEnergy(world.balls(), scene.balls));
   }
   const long long falling = std::min(steps, kPhaseSplit), settled = steps - falling;
   f.msFalling = 1e3 * seconds[0] / static_cast<double>(falling);
   if (settled > 0) f.msSettled = 1e3 * seconds[1] / static_cast<double>(settled);
   f.diskStepsPerSecond =
       static_cast<double>(f.count) * static_cast<double>(steps) / (seconds[0] + seconds[1]);
-  const std::vector<BallState> end = ballsOf(world);
+  const std::vector<BallState> end = world.balls();
   for (const BallState& b : end)
     f.finite = f.finite && b.position.allFinite() && b.velocity.allFinite();
   f.overlap = pile::measureOverlap(end, scene.balls);

@@ -66,43 +66,36 @@ struct RunOptions {
 };
 
 // ---- Reading a state from either world -----------------------------------
-// Box2DWorld reads like World (ballCount, ball, time); scenefile's output
-// helpers take a World, or a time and the balls, so a Box2D state is copied
-// into a vector first. Both paths print through the same code.
-
-std::vector<BallState> ballsOf(const reference::Box2DWorld& world) {
-  std::vector<BallState> balls;
-  balls.reserve(world.ballCount());
-  for (std::size_t i = 0; i < world.ballCount(); ++i) balls.push_back(world.ball(i));
-  return balls;
-}
+// Box2DWorld reads like World (ballCount, ball, balls, time); scenefile's
+// output helpers take a World, or a time and the balls, so a Box2D state is
+// printed from its balls(). Both paths print through the same code.
 
 bool finiteState(const World& world) {
   return allFinite(world);
 }
 bool finiteState(const reference::Box2DWorld& world) {
-  return allFinite(ballsOf(world));
+  return allFinite(world.balls());
 }
 
 void writeRows(CsvTrajectoryWriter& csv, const World& world) {
   csv.write(world);
 }
 void writeRows(CsvTrajectoryWriter& csv, const reference::Box2DWorld& world) {
-  csv.write(world.time(), ballsOf(world));
+  csv.write(world.time(), world.balls());
 }
 
 std::uint64_t stateHashOf(const World& world) {
   return stateHash(world);
 }
 std::uint64_t stateHashOf(const reference::Box2DWorld& world) {
-  return stateHash(ballsOf(world));
+  return stateHash(world.balls());
 }
 
 std::string stateText(const World& world) {
   return finalStateText(world);
 }
 std::string stateText(const reference::Box2DWorld& world) {
-  return finalStateText(world.time(), ballsOf(world));
+  return finalStateText(world.time(), world.balls());
 }
 
 // ---- The run ----------------------------------------------------------------

@@ -98,6 +98,12 @@ BallState World::ball(std::size_t i) const {
   return {position_[i], velocity_[i], angle_[i], angularVelocity_[i]};
 }
 
+std::vector<BallState> World::balls() const {
+  std::vector<BallState> all(ballCount());
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = ball(i);
+  return all;
+}
+
 namespace {
 template <typename T>
 std::size_t heapBytes(const std::vector<T>& v) {

@@ -235,6 +235,12 @@ BallState Box2DWorld::ball(std::size_t i) const {
           body->GetAngularVelocity()};
 }
 
+std::vector<BallState> Box2DWorld::balls() const {
+  std::vector<BallState> all(ballCount());
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = ball(i);
+  return all;
+}
+
 void Box2DWorld::setPullTarget(std::size_t force, const Vec2& target) {
   impl_->forces.at(force).target = target;
 }

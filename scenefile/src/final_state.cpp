@@ -28,21 +28,14 @@ bool finite(const BallState& b) {
          std::isfinite(b.angularVelocity);
 }
 
-std::vector<BallState> ballsOf(const World& world) {
-  std::vector<BallState> balls;
-  balls.reserve(world.ballCount());
-  for (std::size_t i = 0; i < world.ballCount(); ++i) balls.push_back(world.ball(i));
-  return balls;
-}
-
 }  // namespace
 
 nlohmann::json finalStateJson(const World& world) {
-  return finalState(world.time(), ballsOf(world));
+  return finalState(world.time(), world.balls());
 }
 
 std::string finalStateText(const World& world) {
-  return finalState(world.time(), ballsOf(world)).dump();
+  return finalState(world.time(), world.balls()).dump();
 }
 
 nlohmann::json finalStateJson(double time, std::span<const BallState> balls) {

@@ -24,12 +24,6 @@ namespace {
 
 constexpr long long kSteps = 400;  // 6.7 s of 1/60 s
 
-std::vector<BallState> statesOf(const World& w) {
-  std::vector<BallState> b(w.ballCount());
-  for (std::size_t i = 0; i < b.size(); ++i) b[i] = w.ball(i);
-  return b;
-}
-
 class SettledPile : public testing::TestWithParam<std::uint64_t> {};
 
 TEST_P(SettledPile, ComesToRestWithItsDisksApart) {
@@ -43,14 +37,14 @@ TEST_P(SettledPile, ComesToRestWithItsDisksApart) {
   std::vector<double> energy;
   for (long long s = 0; s < kSteps; ++s) {
     world.step();
-    energy.push_back(kineticEnergy(statesOf(world), scene.balls));
+    energy.push_back(kineticEnergy(world.balls(), scene.balls));
   }
   const std::optional<long long> rest = restStep(energy, restEnergy(scene.balls));
   ASSERT_TRUE(rest.has_value()) << "kinetic energy at the end " << energy.back() << " J";
   // A pile at rest, not one that just passed through a slow moment: it has
   // stayed at rest over the last 50 steps at least.
   EXPECT_LE(*rest, kSteps - 50);
-  const OverlapFigures overlap = measureOverlap(statesOf(world), scene.balls);
+  const OverlapFigures overlap = measureOverlap(world.balls(), scene.balls);
   EXPECT_GT(overlap.touchingPairs, 2000);  // a pile, not a gas
   EXPECT_LT(overlap.max, 1e-3);            // of the smaller radius
 }

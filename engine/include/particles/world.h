@@ -77,6 +77,8 @@ class World {
   double dt() const { return dt_; }
   std::size_t ballCount() const { return position_.size(); }
   BallState ball(std::size_t i) const;
+  // Every ball's state, in the scene's order.
+  std::vector<BallState> balls() const;
   const StepStats& stats() const { return stats_; }
   const StagePlan& plan() const { return plan_; }
   const SceneDef& scene() const { return scene_; }

@@ -54,6 +54,8 @@ class Box2DWorld {
   std::size_t wallCount() const;
   // A ball's state in the scene's ball order, Box2D's floats widened.
   BallState ball(std::size_t i) const;
+  // Every ball's state, in the scene's order (as World::balls).
+  std::vector<BallState> balls() const;
   const Box2DSettings& settings() const;
   const Box2DLimitHits& limitHits() const;
 
