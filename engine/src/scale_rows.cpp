@@ -62,11 +62,13 @@ inline bool nearWall(const Vec2& x, double grown, const WallDef& wall, WallHit& 
 
 // A row's masses and targets, from its bodies (r.a, r.b, numbered in cell
 // order), normal and reach, the distance of the centres (or of the centre
-// from the wall), the mixed material and the scene's forced velocities.
+// from the wall), the mixed material and the scene's forced velocities
+// (`forces`: whether they differ between balls; when every ball got the same
+// push, as from gravity alone, no ball pair's relative velocity changed).
 // Returns the row's bounce (ScaleSolver::bounce_).
 inline double fillRow(const ScaleSolver::Motion* body, const ScaleSolver::CellBall* cell,
-                      const ScaleBodies& s, const ContactMaterial& m, double reach, double dist,
-                      ScaleSolver::Row& r) {
+                      const ScaleBodies& s, bool forces, const ContactMaterial& m, double reach,
+                      double dist, ScaleSolver::Row& r) {
   const ScaleSolver::Motion& a = body[r.a];
   const ScaleSolver::Motion* b = r.b >= 0 ? &body[r.b] : nullptr;
   const double invA = a.invMass, invB = b ? b->invMass : 0.0;
@@ -82,7 +84,8 @@ inline double fillRow(const ScaleSolver::Motion* body, const ScaleSolver::CellBa
   const Vec2 n = r.normal();
   const double gn = (vb - a.velocity).dot(n);
   double forced = 0.0;
-  if (!s.forcedVelocity.empty()) {
+  // A wall got no push: a ball's own push is relative to it.
+  if (!s.forcedVelocity.empty() && (!b || forces)) {
     const Vec2 fb = b ? s.forcedVelocity[static_cast<std::size_t>(cell[r.b].index)] : Vec2::Zero();
     forced = (fb - s.forcedVelocity[static_cast<std::size_t>(cell[r.a].index)]).dot(n);
   }
@@ -271,8 +274,27 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
   linkStart_.assign(static_cast<std::size_t>(threads) + 1, 0);
   const CellBall* cells = cellBalls_.data();
   Motion* body = motion_.data();
+  // Whether every ball has the first ball's material, and got the first
+  // ball's forced velocity this step (each thread's answer on a cache line
+  // of its own). The usual large scene (one material, gravity alone) then
+  // mixes its materials once per step instead of once per row, and reads no
+  // ball's material or forced velocity per row: both lie in the scene's
+  // numbering, one scattered load per ball of a row. Same bits: the mix of
+  // equal inputs is the same, and equal pushes change no relative velocity.
+  struct alignas(64) Same {
+    bool material = true;
+    bool forced = true;
+  };
+  std::vector<Same> same(static_cast<std::size_t>(threads));
+  const bool anyForces = !s.forcedVelocity.empty();
   pool.run([&](int t) {
     const auto [begin, end] = part(n, t, threads);
+    Same& mine = same[static_cast<std::size_t>(t)];
+    for (std::size_t i = begin; i < end; ++i) {
+      mine.material = mine.material && s.material[i].restitution == s.material[0].restitution &&
+                      s.material[i].friction == s.material[0].friction;
+      mine.forced = mine.forced && (!anyForces || s.forcedVelocity[i] == s.forcedVelocity[0]);
+    }
     for (std::size_t k = begin; k < end; ++k) {
       const std::size_t i = static_cast<std::size_t>(cells[k].index);
       // Whole grid columns per strip: neighbours are at most one column apart.
@@ -284,6 +306,20 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
       lastOf_[k] = warm ? lastNumberOf_[i] : -1;
     }
     pool.sync();
+    bool oneMaterial = true, forces = false;
+    for (const Same& u : same) {
+      oneMaterial = oneMaterial && u.material;
+      forces = forces || !u.forced;
+    }
+    // With one ball material: its mix with itself and with each wall's.
+    ContactMaterial ballMix;
+    std::array<ContactMaterial, 8> wallMix{};
+    const bool mixOnce = oneMaterial && s.walls.size() <= wallMix.size();
+    if (mixOnce) {
+      ballMix = mixMaterials(s.material[0], s.material[0]);
+      for (std::size_t w = 0; w < s.walls.size(); ++w)
+        wallMix[w] = mixMaterials(s.material[0], s.wallMaterial[w]);
+    }
 
     // First the pairs only (8 bytes each), in (a, b) order, counted per
     // strip; then, once every thread's counts are known, each row is made in
@@ -373,7 +409,8 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
         reach = ca.radius + cb.radius;
         dist = std::sqrt(d.squaredNorm());
         normal = dist > 0.0 ? Vec2(d / dist) : Vec2(1.0, 0.0);
-        m = mixMaterials(s.material[ia], s.material[static_cast<std::size_t>(cb.index)]);
+        m = mixOnce ? ballMix
+                    : mixMaterials(s.material[ia], s.material[static_cast<std::size_t>(cb.index)]);
       } else {
         const std::size_t w = static_cast<std::size_t>(-1 - b);
         WallHit hit;
@@ -381,11 +418,11 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
         reach = ca.radius;
         dist = ca.radius + margin - hit.overlap;
         normal = hit.normal;
-        m = mixMaterials(s.material[ia], s.wallMaterial[w]);
+        m = mixOnce ? wallMix[w] : mixMaterials(s.material[ia], s.wallMaterial[w]);
       }
       r.nx = normal.x();
       r.ny = normal.y();
-      const double bounce = fillRow(body, cells, s, m, reach, dist, r);
+      const double bounce = fillRow(body, cells, s, forces, m, reach, dist, r);
       // Warm start from the last step's row of the same two bodies, if any.
       // The impulses do not depend on which ball is a: swapping a and b
       // turns n and tau (= perp n) around and P on b into P on a.

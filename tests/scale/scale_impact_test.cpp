@@ -80,6 +80,54 @@ TEST(ScaleImpact, ObliqueSlidingHitOfTwoBallsMatchesTheClosedForm) {
   EXPECT_NEAR(w.ball(1).angularVelocity, -0.6, 1e-12);
 }
 
+// The same hit with a material per ball, mixed by Box2D's rules (docs/physics.md):
+// e = max(0.5, 0.2) = 0.5 and mu = sqrt(0.04 * 0.25) = 0.1, so the closed form
+// above holds. A scene whose balls share one material mixes it once per step;
+// this one takes the per-row mix.
+TEST(ScaleImpact, MaterialsPerBallAreMixedPerRow) {
+  SceneDef s = onScalePath();
+  s.balls = {ball({0.0, 0.0}, {2.0, 1.0}), ball({1.0, 0.0}, {0.0, 0.0})};
+  s.balls[0].restitution = 0.5;
+  s.balls[0].friction = 0.04;
+  s.balls[1].restitution = 0.2;
+  s.balls[1].friction = 0.25;
+  World w(s);
+  ASSERT_TRUE(w.plan().scale);
+  w.step();
+  EXPECT_NEAR(w.ball(0).velocity.x(), 0.5, 1e-12);
+  EXPECT_NEAR(w.ball(0).velocity.y(), 0.85, 1e-12);
+  EXPECT_NEAR(w.ball(1).velocity.x(), 1.5, 1e-12);
+  EXPECT_NEAR(w.ball(1).velocity.y(), 0.15, 1e-12);
+  EXPECT_NEAR(w.ball(0).angularVelocity, -0.6, 1e-12);
+  EXPECT_NEAR(w.ball(1).angularVelocity, -0.6, 1e-12);
+}
+
+// A constant force F on A pushes it into B, which touches it; no gravity,
+// e = 1. What the force adds within a step is carried, not bounced
+// (docs/physics.md): the two move as one, at F t / (m_A + m_B), and keep
+// touching. Bouncing the push would send B off at twice A's speed. A scene
+// whose balls all get the same push (gravity alone) skips this per-row term;
+// this one needs it.
+TEST(ScaleImpact, APushIsCarriedNotBounced) {
+  SceneDef s = onScalePath();
+  s.contact = {1.0, 0.0};
+  s.balls = {ball({0.0, 0.0}, {0.0, 0.0}), ball({1.0, 0.0}, {0.0, 0.0})};
+  ForceDef push;
+  push.type = ForceType::Constant;
+  push.ball = 0;
+  push.force = {10.0, 0.0};
+  s.forces = {push};
+  World w(s);
+  ASSERT_TRUE(w.plan().scale);
+  for (int k = 1; k <= 100; ++k) {
+    w.step();
+    const double v = 10.0 * k * s.dt / 2.0;
+    ASSERT_NEAR(w.ball(0).velocity.x(), v, 1e-12) << "step " << k;
+    ASSERT_NEAR(w.ball(1).velocity.x(), v, 1e-12) << "step " << k;
+  }
+  EXPECT_NEAR(w.ball(1).position.x() - w.ball(0).position.x(), 1.0, 1e-9);
+}
+
 // At rest on a floor under gravity: the floor's impulse is the weight's, m g
 // dt, every step; the ball neither sinks nor hops.
 TEST(ScaleImpact, RestingBallStaysAtRest) {
