@@ -31,6 +31,7 @@ struct RunFigures {
   std::uint64_t seed = 0;
   int count = 0;
   int threads = 1;
+  int iterations = 0;  // velocity iterations per step (Box2D's: 8)
   long long steps = 0;
   double msFalling = NAN;  // ms/step over steps [0, 300)
   double msSettled = NAN;  // ms/step over steps [300, steps), NaN if none
@@ -95,9 +96,9 @@ std::string general(double v) {
 
 void printTable(const std::vector<RunFigures>& rows,
                 const std::vector<std::optional<RunFigures>>& ref) {
-  std::printf("%-7s %8s %3s %6s %10s %10s %10s %8s %8s %12s %6s %7s %8s %8s %10s\n", "engine", "N",
-              "T", "steps", "ms 0-299", "ms 300+", "Mdisk-st/s", "ovl max", "ovl mean", "KE last60",
-              "rest", "B/ball", "x Box2D", "ovl/B2D", "seed");
+  std::printf("%-7s %8s %3s %3s %6s %10s %10s %10s %8s %8s %12s %6s %7s %8s %8s %10s\n", "engine",
+              "N", "T", "K", "steps", "ms 0-299", "ms 300+", "Mdisk-st/s", "ovl max", "ovl mean",
+              "KE last60", "rest", "B/ball", "x Box2D", "ovl/B2D", "seed");
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const RunFigures& r = rows[i];
     const bool engine = r.engine == "engine";
@@ -107,8 +108,8 @@ void printTable(const std::vector<RunFigures>& rows,
       overlapRatio = r.overlap.max / ref[i]->overlap.max;
     }
     std::printf(
-        "%-7s %8d %3d %6lld %10s %10s %10s %7s%% %7s%% %12s %6s %7s %8s %8s %10llu\n",
-        r.engine.c_str(), r.count, r.threads, r.steps, fixed(r.msFalling, 2).c_str(),
+        "%-7s %8d %3d %3d %6lld %10s %10s %10s %7s%% %7s%% %12s %6s %7s %8s %8s %10llu\n",
+        r.engine.c_str(), r.count, r.threads, r.iterations, r.steps, fixed(r.msFalling, 2).c_str(),
         fixed(r.msSettled, 2).c_str(), fixed(r.diskStepsPerSecond / 1e6, 3).c_str(),
         fixed(100.0 * r.overlap.max, 2).c_str(), fixed(100.0 * r.overlap.mean, 3).c_str(),
         general(r.keLastMean).c_str(), r.restStep ? std::to_string(*r.restStep).c_str() : "no",
@@ -116,10 +117,10 @@ void printTable(const std::vector<RunFigures>& rows,
         fixed(overlapRatio, 2).c_str(), static_cast<unsigned long long>(r.seed));
   }
   std::printf(
-      "ms: mean wall time per step; KE last60: mean kinetic energy (J) over the last 60 "
-      "steps; rest: the step from which KE stays <= M (%.2g m/s)^2 / 2 (\"no\": not at rest "
-      "at the end); x Box2D: disk-steps/s engine / Box2D; ovl/B2D: max overlap engine / "
-      "Box2D\n",
+      "K: velocity iterations per step; ms: mean wall time per step; KE last60: mean kinetic "
+      "energy (J) over the last 60 steps; rest: the step from which KE stays <= "
+      "M (%.2g m/s)^2 / 2 (\"no\": not at rest at the end); x Box2D: disk-steps/s engine / "
+      "Box2D; ovl/B2D: max overlap engine / Box2D\n",
       pile::kRestSpeed);
 }
 
@@ -135,9 +136,9 @@ double median(std::vector<double> v) {
 // their worst (docs/scale.md).
 void printSeedSummary(const std::vector<RunFigures>& rows,
                       const std::vector<std::optional<RunFigures>>& ref, int seeds) {
-  std::printf("\nover %d seeds:\n%-7s %8s %3s %10s %9s %9s %9s %12s %7s %8s\n", seeds, "engine",
-              "N", "T", "Mdisk-st/s", "max mean", "max worst", "ovl mean", "KE last60", "at rest",
-              "x Box2D");
+  std::printf("\nover %d seeds:\n%-7s %8s %3s %3s %10s %9s %9s %9s %12s %7s %8s\n", seeds, "engine",
+              "N", "T", "K", "Mdisk-st/s", "max mean", "max worst", "ovl mean", "KE last60",
+              "at rest", "x Box2D");
   std::vector<bool> done(rows.size(), false);
   for (std::size_t i = 0; i < rows.size(); ++i) {
     if (done[i]) continue;
@@ -146,7 +147,8 @@ void printSeedSummary(const std::vector<RunFigures>& rows,
     int runs = 0, resting = 0;
     for (std::size_t j = i; j < rows.size(); ++j) {
       const RunFigures& r = rows[j];
-      if (r.engine != rows[i].engine || r.count != rows[i].count || r.threads != rows[i].threads)
+      if (r.engine != rows[i].engine || r.count != rows[i].count || r.threads != rows[i].threads ||
+          r.iterations != rows[i].iterations)
         continue;
       done[j] = true;
       ++runs;
@@ -160,8 +162,8 @@ void printSeedSummary(const std::vector<RunFigures>& rows,
       if (r.restStep) ++resting;
     }
     const RunFigures& r = rows[i];
-    std::printf("%-7s %8d %3d %10s %8s%% %8s%% %8s%% %12s %4d/%-2d %8s\n", r.engine.c_str(),
-                r.count, r.threads, fixed(median(speed) / 1e6, 3).c_str(),
+    std::printf("%-7s %8d %3d %3d %10s %8s%% %8s%% %8s%% %12s %4d/%-2d %8s\n", r.engine.c_str(),
+                r.count, r.threads, r.iterations, fixed(median(speed) / 1e6, 3).c_str(),
                 fixed(100.0 * maxSum / runs, 2).c_str(), fixed(100.0 * maxWorst, 2).c_str(),
                 fixed(100.0 * meanSum / runs, 3).c_str(), general(energySum / runs).c_str(),
                 resting, runs, ratio.empty() ? "-" : fixed(median(ratio), 2).c_str());
@@ -174,19 +176,21 @@ void printSeedSummary(const std::vector<RunFigures>& rows,
 
 void writeCsv(std::ostream& out, const std::vector<RunFigures>& rows,
               const std::vector<std::optional<RunFigures>>& ref, bool poly) {
-  out << "engine,n,polydisperse,threads,steps,ms_per_step_0_299,ms_per_step_300_599,"
+  out << "engine,n,polydisperse,threads,velocity_iterations,steps,"
+         "ms_per_step_0_299,ms_per_step_300_599,"
          "disk_steps_per_s,overlap_max_fraction,overlap_mean_fraction,touching_pairs,"
          "ke_last60_mean_J,ke_last60_max_J,ke_final_J,rest_energy_J,rest_step,bytes_per_ball,"
          "speed_ratio_engine_over_box2d,overlap_max_ratio_engine_over_box2d,seed\n";
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const RunFigures& r = rows[i];
     const bool withRef = r.engine == "engine" && ref[i].has_value();
-    out << r.engine << ',' << r.count << ',' << (poly ? 1 : 0) << ',' << r.threads << ',' << r.steps
-        << ',' << general(r.msFalling) << ',' << general(r.msSettled) << ','
-        << general(r.diskStepsPerSecond) << ',' << general(r.overlap.max) << ','
-        << general(r.overlap.mean) << ',' << r.overlap.touchingPairs << ',' << general(r.keLastMean)
-        << ',' << general(r.keLastMax) << ',' << general(r.keFinal) << ',' << general(r.restEnergy)
-        << ',' << (r.restStep ? std::to_string(*r.restStep) : "") << ','
+    out << r.engine << ',' << r.count << ',' << (poly ? 1 : 0) << ',' << r.threads << ','
+        << r.iterations << ',' << r.steps << ',' << general(r.msFalling) << ','
+        << general(r.msSettled) << ',' << general(r.diskStepsPerSecond) << ','
+        << general(r.overlap.max) << ',' << general(r.overlap.mean) << ','
+        << r.overlap.touchingPairs << ',' << general(r.keLastMean) << ',' << general(r.keLastMax)
+        << ',' << general(r.keFinal) << ',' << general(r.restEnergy) << ','
+        << (r.restStep ? std::to_string(*r.restStep) : "") << ','
         << (r.bytesPerBall ? general(*r.bytesPerBall) : "") << ','
         << (withRef ? general(r.diskStepsPerSecond / ref[i]->diskStepsPerSecond) : "") << ','
         << (withRef ? general(r.overlap.max / ref[i]->overlap.max) : "") << ',' << r.seed << '\n';
@@ -218,9 +222,11 @@ void addScaleBenchOptions(CLI::App& bench, ScaleBenchOptions& o) {
   // with --scale it names this CSV (default pile.csv; '' = none).
   bench
       .add_option("--iterations", o.iterations,
-                  "Engine velocity iterations per step on the large-scene path (default: "
-                  "SolverSettings::scaleVelocityIterations, 8)")
-      ->type_name("K")
+                  "Engine velocity iterations per step on the large-scene path, one engine run "
+                  "per value and thread count (default: SolverSettings::scaleVelocityIterations, "
+                  "8): run time against error in one run, against one Box2D run per N")
+      ->type_name("K...")
+      ->expected(1, 16)
       ->check(integerInRange(1, 10000));
   bench
       .add_option("--position-passes", o.positionPasses,
@@ -281,28 +287,34 @@ int runScaleBench(const ScaleBenchOptions& o) {
         box2d = measure(world, scene, o.steps);
         box2d->engine = "box2d";
         box2d->seed = params.seed;
+        box2d->iterations = settings.velocityIterations;
         std::fprintf(stderr, "particles: bench: box2d N=%d seed %llu done\n", n,
                      static_cast<unsigned long long>(params.seed));
       }
-      for (const int t : o.threads) {
-        params.threads = t;
-        SceneDef scene = pile::makePile(params);
-        if (o.iterations > 0) scene.solver.scaleVelocityIterations = o.iterations;
-        if (o.positionPasses > 0) scene.solver.scalePositionPasses = o.positionPasses;
-        if (o.shock >= 0.0) scene.solver.scaleShockPropagation = o.shock;
-        if (o.relaxation > 0.0) scene.solver.scaleOverRelaxation = o.relaxation;
-        if (o.noVelocityShock) scene.solver.scaleVelocityShock = false;
-        World world(scene);
-        RunFigures f = measure(world, scene, o.steps);
-        f.engine = "engine";
-        f.seed = params.seed;
-        f.threads = t;
-        f.bytesPerBall = static_cast<double>(world.memoryBytes()) / n;
-        std::fprintf(stderr, "particles: bench: engine N=%d T=%d seed %llu done\n", n, t,
-                     static_cast<unsigned long long>(params.seed));
-        rows.push_back(f);
-        ref.push_back(box2d);
-      }
+      const std::vector<int> iterations =
+          o.iterations.empty() ? std::vector<int>{SolverSettings{}.scaleVelocityIterations}
+                               : o.iterations;
+      for (const int t : o.threads)
+        for (const int k : iterations) {
+          params.threads = t;
+          SceneDef scene = pile::makePile(params);
+          scene.solver.scaleVelocityIterations = k;
+          if (o.positionPasses > 0) scene.solver.scalePositionPasses = o.positionPasses;
+          if (o.shock >= 0.0) scene.solver.scaleShockPropagation = o.shock;
+          if (o.relaxation > 0.0) scene.solver.scaleOverRelaxation = o.relaxation;
+          if (o.noVelocityShock) scene.solver.scaleVelocityShock = false;
+          World world(scene);
+          RunFigures f = measure(world, scene, o.steps);
+          f.engine = "engine";
+          f.seed = params.seed;
+          f.threads = t;
+          f.iterations = k;
+          f.bytesPerBall = static_cast<double>(world.memoryBytes()) / n;
+          std::fprintf(stderr, "particles: bench: engine N=%d T=%d K=%d seed %llu done\n", n, t, k,
+                       static_cast<unsigned long long>(params.seed));
+          rows.push_back(f);
+          ref.push_back(box2d);
+        }
       if (box2d) {
         rows.push_back(*box2d);
         ref.push_back(box2d);

@@ -23,7 +23,9 @@ struct ScaleBenchOptions {
   std::string csv = "pile.csv";          // --csv: where the CSV goes ("" = none)
   std::uint64_t seed = 20261201;         // --seed: the grid's jitter and radii
   int seeds = 1;  // --seeds: runs per N with seeds seed, seed + 1, ... (a settling pile is chaotic)
-  int iterations = 0;       // --iterations: SolverSettings::scaleVelocityIterations (0 = default)
+  // --iterations: SolverSettings::scaleVelocityIterations, one engine run per
+  // value and thread count (empty = the default)
+  std::vector<int> iterations;
   int positionPasses = 0;   // --position-passes: SolverSettings::scalePositionPasses (0 = default)
   double shock = -1.0;      // --shock: SolverSettings::scaleShockPropagation (< 0 = default)
   double relaxation = 0.0;  // --relaxation: SolverSettings::scaleOverRelaxation (0 = default)

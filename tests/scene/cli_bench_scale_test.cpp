@@ -58,14 +58,14 @@ TEST(CliBenchScale, TinyRunWritesTableAndCsv) {
   EXPECT_NE(r.out.find("engine"), std::string::npos);
   EXPECT_NE(r.out.find("box2d"), std::string::npos);
   const std::string text = readFile(csv);
-  EXPECT_TRUE(text.starts_with("engine,n,polydisperse,threads,steps,")) << text;
+  EXPECT_TRUE(text.starts_with("engine,n,polydisperse,threads,velocity_iterations,steps,")) << text;
   EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 4) << text;  // header, T=1, T=2, box2d
-  EXPECT_NE(text.find("\nengine,60,0,2,4,"), std::string::npos) << text;
-  EXPECT_NE(text.find("\nbox2d,60,0,1,4,"), std::string::npos) << text;
+  EXPECT_NE(text.find("\nengine,60,0,2,8,4,"), std::string::npos) << text;
+  EXPECT_NE(text.find("\nbox2d,60,0,1,8,4,"), std::string::npos) << text;
 }
 
 // Every CSV line of `engine` with its three timing fields (ms 0-299,
-// ms 300+, disk-steps/s) left out: they differ from run to run, nothing else
+// ms 300+, disk-steps/s: columns 6 to 8) left out: they differ from run to run, nothing else
 // may. The fields kept end with a comma each.
 std::vector<std::string> figuresBySeed(const std::string& csv, const std::string& engine) {
   std::vector<std::string> lines;
@@ -77,7 +77,7 @@ std::vector<std::string> figuresBySeed(const std::string& csv, const std::string
     std::istringstream fields(line);
     std::string field, kept;
     for (int i = 0; std::getline(fields, field, ','); ++i)
-      if (i < 5 || i > 7) kept += field + ",";
+      if (i < 6 || i > 8) kept += field + ",";
     lines.push_back(kept);
   }
   return lines;
@@ -100,6 +100,37 @@ TEST(CliBenchScale, SeedsRunsConsecutiveSeedsAndSummarises) {
   EXPECT_TRUE(two[0].ends_with(",7,")) << two[0];
   EXPECT_EQ(two[1], one[0]);
   EXPECT_NE(two[0], two[1]);  // another seed, another pile
+}
+
+// --iterations K... runs the engine once per value (and thread count)
+// against one Box2D run: each run is the run with that single value, bit for
+// bit (its figures; the timings differ from run to run).
+TEST(CliBenchScale, IterationsRunsOneEngineRunPerValue) {
+  TempDir dir;
+  const std::string both = dir.file("both.csv").string(), one = dir.file("one.csv").string();
+  const std::string common = "bench --scale --n 60 --threads 1 --steps 30 --csv ";
+  const CliResult r = runCli(common + shellQuote(both) + " --iterations 2 8");
+  ASSERT_EQ(r.status, 0) << r.err;
+  ASSERT_EQ(runCli(common + shellQuote(one) + " --iterations 8 --no-box2d").status, 0);
+  const std::vector<std::string> runs = figuresBySeed(readFile(both), "engine");
+  const std::vector<std::string> single = figuresBySeed(readFile(one), "engine");
+  ASSERT_EQ(runs.size(), 2u);
+  ASSERT_EQ(single.size(), 1u);
+  EXPECT_TRUE(runs[0].starts_with("engine,60,0,1,2,30,")) << runs[0];
+  EXPECT_TRUE(runs[1].starts_with("engine,60,0,1,8,30,")) << runs[1];
+  // Without Box2D the two ratio columns are empty; the rest is the same.
+  const auto withoutRatios = [](const std::string& line) {
+    std::istringstream fields(line);
+    std::string field, kept;
+    for (int i = 0; std::getline(fields, field, ','); ++i)
+      if (i < 15 || i > 16) kept += field + ",";
+    return kept;
+  };
+  EXPECT_EQ(withoutRatios(runs[1]), withoutRatios(single[0]));
+  EXPECT_NE(runs[0], runs[1]);
+  const std::string text = readFile(both);
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 4) << text;  // header, K=2, K=8, box2d
+  expectBadInput("bench --scale --iterations 0 --csv ''", "--iterations");
 }
 
 }  // namespace
