@@ -64,6 +64,16 @@ TEST(ScaleImpact, SlidingFloorHitMatchesTheClosedForm) {
 // over-relax the normal impulse (SolverSettings::scaleOverRelaxation), which
 // overshoots; the last one sets it exactly before the friction takes its
 // bound, so the friction is not clamped by an overshot impulse.
+void expectObliqueSlidingHit(const World& w) {
+  EXPECT_NEAR(w.ball(0).velocity.x(), 0.5, 1e-12);
+  EXPECT_NEAR(w.ball(0).velocity.y(), 0.85, 1e-12);
+  EXPECT_NEAR(w.ball(1).velocity.x(), 1.5, 1e-12);
+  EXPECT_NEAR(w.ball(1).velocity.y(), 0.15, 1e-12);
+  EXPECT_NEAR(w.ball(0).angularVelocity, -0.6, 1e-12);
+  EXPECT_NEAR(w.ball(1).angularVelocity, -0.6, 1e-12);
+}
+
+// That hit, solved on the large path with the default over-relaxation.
 TEST(ScaleImpact, ObliqueSlidingHitOfTwoBallsMatchesTheClosedForm) {
   SceneDef s = onScalePath();
   s.contact = {0.5, 0.1};
@@ -72,12 +82,7 @@ TEST(ScaleImpact, ObliqueSlidingHitOfTwoBallsMatchesTheClosedForm) {
   ASSERT_TRUE(w.plan().scale);
   ASSERT_GT(s.solver.scaleOverRelaxation, 1.0);
   w.step();
-  EXPECT_NEAR(w.ball(0).velocity.x(), 0.5, 1e-12);
-  EXPECT_NEAR(w.ball(0).velocity.y(), 0.85, 1e-12);
-  EXPECT_NEAR(w.ball(1).velocity.x(), 1.5, 1e-12);
-  EXPECT_NEAR(w.ball(1).velocity.y(), 0.15, 1e-12);
-  EXPECT_NEAR(w.ball(0).angularVelocity, -0.6, 1e-12);
-  EXPECT_NEAR(w.ball(1).angularVelocity, -0.6, 1e-12);
+  expectObliqueSlidingHit(w);
 }
 
 // The same hit with a material per ball, mixed by Box2D's rules (docs/physics.md):
@@ -94,12 +99,7 @@ TEST(ScaleImpact, MaterialsPerBallAreMixedPerRow) {
   World w(s);
   ASSERT_TRUE(w.plan().scale);
   w.step();
-  EXPECT_NEAR(w.ball(0).velocity.x(), 0.5, 1e-12);
-  EXPECT_NEAR(w.ball(0).velocity.y(), 0.85, 1e-12);
-  EXPECT_NEAR(w.ball(1).velocity.x(), 1.5, 1e-12);
-  EXPECT_NEAR(w.ball(1).velocity.y(), 0.15, 1e-12);
-  EXPECT_NEAR(w.ball(0).angularVelocity, -0.6, 1e-12);
-  EXPECT_NEAR(w.ball(1).angularVelocity, -0.6, 1e-12);
+  expectObliqueSlidingHit(w);
 }
 
 // A constant force F on A pushes it into B, which touches it; no gravity,

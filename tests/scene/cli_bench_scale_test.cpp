@@ -64,6 +64,16 @@ TEST(CliBenchScale, TinyRunWritesTableAndCsv) {
   EXPECT_NE(text.find("\nbox2d,60,0,1,8,4,"), std::string::npos) << text;
 }
 
+// A CSV line without its fields [first, last] (0-based); each field kept
+// ends with a comma.
+std::string withoutFields(const std::string& line, int first, int last) {
+  std::istringstream fields(line);
+  std::string field, kept;
+  for (int i = 0; std::getline(fields, field, ','); ++i)
+    if (i < first || i > last) kept += field + ",";
+  return kept;
+}
+
 // Every CSV line of `engine` with its three timing fields (ms 0-299,
 // ms 300+, disk-steps/s: columns 6 to 8) left out: they differ from run to run, nothing else
 // may. The fields kept end with a comma each.
@@ -74,11 +84,7 @@ std::vector<std::string> figuresBySeed(const std::string& csv, const std::string
   std::getline(in, line);  // the header, whose first column is named "engine" too
   while (std::getline(in, line)) {
     if (!line.starts_with(engine + ",")) continue;
-    std::istringstream fields(line);
-    std::string field, kept;
-    for (int i = 0; std::getline(fields, field, ','); ++i)
-      if (i < 6 || i > 8) kept += field + ",";
-    lines.push_back(kept);
+    lines.push_back(withoutFields(line, 6, 8));
   }
   return lines;
 }
@@ -118,15 +124,9 @@ TEST(CliBenchScale, IterationsRunsOneEngineRunPerValue) {
   ASSERT_EQ(single.size(), 1u);
   EXPECT_TRUE(runs[0].starts_with("engine,60,0,1,2,30,")) << runs[0];
   EXPECT_TRUE(runs[1].starts_with("engine,60,0,1,8,30,")) << runs[1];
-  // Without Box2D the two ratio columns are empty; the rest is the same.
-  const auto withoutRatios = [](const std::string& line) {
-    std::istringstream fields(line);
-    std::string field, kept;
-    for (int i = 0; std::getline(fields, field, ','); ++i)
-      if (i < 15 || i > 16) kept += field + ",";
-    return kept;
-  };
-  EXPECT_EQ(withoutRatios(runs[1]), withoutRatios(single[0]));
+  // Without Box2D the two ratio columns (15 and 16 once the timings are left
+  // out) are empty; the rest is the same.
+  EXPECT_EQ(withoutFields(runs[1], 15, 16), withoutFields(single[0], 15, 16));
   EXPECT_NE(runs[0], runs[1]);
   const std::string text = readFile(both);
   EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 4) << text;  // header, K=2, K=8, box2d
