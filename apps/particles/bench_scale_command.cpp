@@ -271,6 +271,9 @@ int runScaleBench(const ScaleBenchOptions& o) {
   }
   std::vector<RunFigures> rows;
   std::vector<std::optional<RunFigures>> ref;  // the Box2D run of each row's N
+  const std::vector<int> iterations =
+      o.iterations.empty() ? std::vector<int>{SolverSettings{}.scaleVelocityIterations}
+                           : o.iterations;
   for (const int n : o.counts) {
     for (int k = 0; k < o.seeds; ++k) {
       pile::PileParams params;
@@ -291,9 +294,6 @@ int runScaleBench(const ScaleBenchOptions& o) {
         std::fprintf(stderr, "particles: bench: box2d N=%d seed %llu done\n", n,
                      static_cast<unsigned long long>(params.seed));
       }
-      const std::vector<int> iterations =
-          o.iterations.empty() ? std::vector<int>{SolverSettings{}.scaleVelocityIterations}
-                               : o.iterations;
       for (const int t : o.threads)
         for (const int k : iterations) {
           params.threads = t;

@@ -287,6 +287,12 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
   };
   std::vector<Same> same(static_cast<std::size_t>(threads));
   const bool anyForces = !s.forcedVelocity.empty();
+  // The first ball's material mixed with itself and with each wall's, once
+  // for all threads: the rows' materials if every ball has it.
+  const ContactMaterial ballMix = mixMaterials(s.material[0], s.material[0]);
+  std::vector<ContactMaterial> wallMix(s.walls.size());
+  for (std::size_t w = 0; w < s.walls.size(); ++w)
+    wallMix[w] = mixMaterials(s.material[0], s.wallMaterial[w]);
   pool.run([&](int t) {
     const auto [begin, end] = part(n, t, threads);
     Same& mine = same[static_cast<std::size_t>(t)];
@@ -306,19 +312,10 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
       lastOf_[k] = warm ? lastNumberOf_[i] : -1;
     }
     pool.sync();
-    bool oneMaterial = true, forces = false;
+    bool mixOnce = true, forces = false;
     for (const Same& u : same) {
-      oneMaterial = oneMaterial && u.material;
+      mixOnce = mixOnce && u.material;
       forces = forces || !u.forced;
-    }
-    // With one ball material: its mix with itself and with each wall's.
-    ContactMaterial ballMix;
-    std::array<ContactMaterial, 8> wallMix{};
-    const bool mixOnce = oneMaterial && s.walls.size() <= wallMix.size();
-    if (mixOnce) {
-      ballMix = mixMaterials(s.material[0], s.material[0]);
-      for (std::size_t w = 0; w < s.walls.size(); ++w)
-        wallMix[w] = mixMaterials(s.material[0], s.wallMaterial[w]);
     }
 
     // First the pairs only (8 bytes each), in (a, b) order, counted per
