@@ -41,6 +41,7 @@ struct RunFigures {
   double restEnergy = 0.0;                                  // J
   std::optional<long long> restStep;  // step (1-based) from which the pile stays at rest
   std::optional<double> bytesPerBall;
+  long long outside = 0;  // balls with their centre outside the box at the end
   bool finite = true;
 };
 
@@ -68,6 +69,12 @@ RunFigures measure(W& world, const SceneDef& scene, long long steps) {
   for (const BallState& b : end)
     f.finite = f.finite && b.position.allFinite() && b.velocity.allFinite();
   f.overlap = pile::measureOverlap(end, scene.balls);
+  Vec2 lo = Vec2::Constant(INFINITY), hi = Vec2::Constant(-INFINITY);  // the box: its walls' ends
+  for (const WallDef& w : scene.walls) {
+    lo = lo.cwiseMin(w.a).cwiseMin(w.b);
+    hi = hi.cwiseMax(w.a).cwiseMax(w.b);
+  }
+  f.outside = pile::countOutside(end, lo, hi);
   const std::size_t from = energy.size() - static_cast<std::size_t>(std::min(steps, kLastSteps));
   double sum = 0.0;
   for (std::size_t k = from; k < energy.size(); ++k) {
@@ -96,9 +103,9 @@ std::string general(double v) {
 
 void printTable(const std::vector<RunFigures>& rows,
                 const std::vector<std::optional<RunFigures>>& ref) {
-  std::printf("%-7s %8s %3s %3s %6s %10s %10s %10s %8s %8s %12s %6s %7s %8s %8s %10s\n", "engine",
-              "N", "T", "K", "steps", "ms 0-299", "ms 300+", "Mdisk-st/s", "ovl max", "ovl mean",
-              "KE last60", "rest", "B/ball", "x Box2D", "ovl/B2D", "seed");
+  std::printf("%-7s %8s %3s %3s %6s %10s %10s %10s %8s %8s %12s %6s %4s %7s %8s %8s %10s\n",
+              "engine", "N", "T", "K", "steps", "ms 0-299", "ms 300+", "Mdisk-st/s", "ovl max",
+              "ovl mean", "KE last60", "rest", "out", "B/ball", "x Box2D", "ovl/B2D", "seed");
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const RunFigures& r = rows[i];
     const bool engine = r.engine == "engine";
@@ -108,18 +115,20 @@ void printTable(const std::vector<RunFigures>& rows,
       overlapRatio = r.overlap.max / ref[i]->overlap.max;
     }
     std::printf(
-        "%-7s %8d %3d %3d %6lld %10s %10s %10s %7s%% %7s%% %12s %6s %7s %8s %8s %10llu\n",
+        "%-7s %8d %3d %3d %6lld %10s %10s %10s %7s%% %7s%% %12s %6s %4lld %7s %8s %8s %10llu\n",
         r.engine.c_str(), r.count, r.threads, r.iterations, r.steps, fixed(r.msFalling, 2).c_str(),
         fixed(r.msSettled, 2).c_str(), fixed(r.diskStepsPerSecond / 1e6, 3).c_str(),
         fixed(100.0 * r.overlap.max, 2).c_str(), fixed(100.0 * r.overlap.mean, 3).c_str(),
         general(r.keLastMean).c_str(), r.restStep ? std::to_string(*r.restStep).c_str() : "no",
-        r.bytesPerBall ? fixed(*r.bytesPerBall, 0).c_str() : "-", fixed(timeRatio, 2).c_str(),
-        fixed(overlapRatio, 2).c_str(), static_cast<unsigned long long>(r.seed));
+        r.outside, r.bytesPerBall ? fixed(*r.bytesPerBall, 0).c_str() : "-",
+        fixed(timeRatio, 2).c_str(), fixed(overlapRatio, 2).c_str(),
+        static_cast<unsigned long long>(r.seed));
   }
   std::printf(
       "K: velocity iterations per step; ms: mean wall time per step; KE last60: mean kinetic "
       "energy (J) over the last 60 steps; rest: the step from which KE stays <= "
-      "M (%.2g m/s)^2 / 2 (\"no\": not at rest at the end); x Box2D: disk-steps/s engine / "
+      "M (%.2g m/s)^2 / 2 (\"no\": not at rest at the end); out: balls with their centre "
+      "outside the box at the end; x Box2D: disk-steps/s engine / "
       "Box2D; ovl/B2D: max overlap engine / Box2D\n",
       pile::kRestSpeed);
 }
@@ -180,7 +189,8 @@ void writeCsv(std::ostream& out, const std::vector<RunFigures>& rows,
          "ms_per_step_0_299,ms_per_step_300_599,"
          "disk_steps_per_s,overlap_max_fraction,overlap_mean_fraction,touching_pairs,"
          "ke_last60_mean_J,ke_last60_max_J,ke_final_J,rest_energy_J,rest_step,bytes_per_ball,"
-         "speed_ratio_engine_over_box2d,overlap_max_ratio_engine_over_box2d,seed\n";
+         "speed_ratio_engine_over_box2d,overlap_max_ratio_engine_over_box2d,balls_outside_box,"
+         "seed\n";
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const RunFigures& r = rows[i];
     const bool withRef = r.engine == "engine" && ref[i].has_value();
@@ -193,7 +203,8 @@ void writeCsv(std::ostream& out, const std::vector<RunFigures>& rows,
         << (r.restStep ? std::to_string(*r.restStep) : "") << ','
         << (r.bytesPerBall ? general(*r.bytesPerBall) : "") << ','
         << (withRef ? general(r.diskStepsPerSecond / ref[i]->diskStepsPerSecond) : "") << ','
-        << (withRef ? general(r.overlap.max / ref[i]->overlap.max) : "") << ',' << r.seed << '\n';
+        << (withRef ? general(r.overlap.max / ref[i]->overlap.max) : "") << ',' << r.outside << ','
+        << r.seed << '\n';
   }
 }
 

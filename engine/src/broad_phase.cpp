@@ -45,6 +45,18 @@ bool touchWall(const Vec2& x, double r, const WallDef& wall, WallHit& hit) {
   const double detect = r * (1.0 + kTouchSlop);
   if (dist2 > detect * detect) return false;
   const double dist = std::sqrt(dist2);
+  // A one-sided wall's solid lies on the right of a -> b. A centre on that
+  // side (h < 0), or on the line, leaves by the wall's front normal, as far
+  // as its radius past the line: r - h of overlap.
+  if (wall.oneSided && len2 > 0.0) {
+    const Vec2 front = perpLeft(ab) / std::sqrt(len2);
+    const double h = (x - wall.a).dot(front);
+    if (h <= 0.0) {
+      hit.normal = -front;
+      hit.overlap = r - h;
+      return true;
+    }
+  }
   if (dist > 0.0) {
     hit.normal = d / dist;
   } else {

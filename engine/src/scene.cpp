@@ -10,6 +10,7 @@ std::vector<WallDef> boxWalls(const Vec2& lo, const Vec2& hi) {
     WallDef w;
     w.a = a;
     w.b = b;
+    w.oneSided = true;  // counter-clockwise: the inside is on each wall's left
     return w;
   };
   return {wall(lo, lr), wall(lr, hi), wall(hi, ul), wall(ul, lo)};

@@ -7,7 +7,8 @@
 namespace particles::scenefile {
 namespace {
 
-constexpr std::array<std::string_view, 4> kWallKeys{"a", "b", "restitution", "friction"};
+constexpr std::array<std::string_view, 5> kWallKeys{"a", "b", "restitution", "friction",
+                                                    "one_sided"};
 constexpr std::array<std::string_view, 4> kBoxKeys{"min", "max", "restitution", "friction"};
 
 std::string text(const Vec2& v) {
@@ -30,6 +31,7 @@ WallDef readWall(const Node& node) {
   wall.b = readVec2(node.required("b"));
   if (auto e = node.optional("restitution")) wall.restitution = readRestitution(*e);
   if (auto mu = node.optional("friction")) wall.friction = readFriction(*mu);
+  if (auto side = node.optional("one_sided")) wall.oneSided = readBool(*side);
   return wall;
 }
 

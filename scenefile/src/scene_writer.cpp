@@ -25,6 +25,7 @@ nlohmann::json sceneJson(const SceneDef& s) {
     nlohmann::json o{{"a", vec(w.a)}, {"b", vec(w.b)}};
     if (w.restitution) o["restitution"] = *w.restitution;
     if (w.friction) o["friction"] = friction(*w.friction);
+    if (w.oneSided) o["one_sided"] = true;
     j["walls"].push_back(o);
   }
   j["balls"] = nlohmann::json::array();

@@ -1,6 +1,7 @@
 // The pile figures on hand-built configurations whose answers are known.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <vector>
 
 #include "particles/pile/pile_metrics.h"
@@ -63,6 +64,17 @@ TEST(PileMetrics, KineticEnergyCountsTranslationAndSpin) {
   b.angularVelocity = -1.0;  // 1/2 3 1 = 1.5 J
   const std::vector<BallDef> defs = {a, b};
   EXPECT_DOUBLE_EQ(kineticEnergy(statesOf(defs), defs), 27.0);
+}
+
+// Border points are inside; a NaN centre is outside (it is nowhere in the box).
+TEST(PileMetrics, OutsideCountsCentresBeyondTheBox) {
+  const Vec2 lo(0.0, 0.0), hi(10.0, 20.0);
+  auto at = [](double x, double y) { return BallState{Vec2(x, y), Vec2::Zero(), 0.0, 0.0}; };
+  const std::vector<BallState> in = {at(0.0, 0.0), at(10.0, 20.0), at(5.0, 7.0)};
+  EXPECT_EQ(countOutside(in, lo, hi), 0);
+  const std::vector<BallState> out = {at(-0.04, 5.0), at(5.0, -1e-9), at(10.5, 5.0),
+                                      at(5.0, 20.1),  at(5.0, 5.0),   at(NAN, 5.0)};
+  EXPECT_EQ(countOutside(out, lo, hi), 5);
 }
 
 TEST(PileMetrics, RestEnergyIsAllTheMassAtTheRestSpeed) {

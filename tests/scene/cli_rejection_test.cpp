@@ -341,6 +341,11 @@ TEST_F(Rejection, SweptWallsAsString) {
                  "must be true or false, got string \"true\"");
 }
 
+TEST_F(Rejection, OneSidedNotBoolean) {
+  expectRejected(withBall(R"("walls": [{"a": [-5, -2], "b": [5, -2], "one_sided": "yes"}])"),
+                 "walls[0].one_sided", "must be true or false, got string \"yes\"");
+}
+
 TEST_F(Rejection, SweptBallsNotBoolean) {
   expectRejected(withBall(R"("solver": {"swept_balls": null})"), "solver.swept_balls",
                  "must be true or false, got null");

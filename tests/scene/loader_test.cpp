@@ -136,7 +136,19 @@ TEST(Loader, BoxAppendsFourWallsAfterTheOthers) {
     EXPECT_EQ(s.walls[k + 1].b, box[k].b);
     EXPECT_EQ(*s.walls[k + 1].restitution, 0.7);
     EXPECT_EQ(*s.walls[k + 1].friction, kNoSlip);
+    EXPECT_TRUE(s.walls[k + 1].oneSided);  // a box's walls face in
   }
+}
+
+TEST(Loader, WallsAreTwoSidedUnlessOneSidedIsSet) {
+  const SceneDef s = parse(R"({"walls": [{"a": [-5, -1], "b": [5, -1]},
+              {"a": [5, 5], "b": [-5, 5], "one_sided": true},
+              {"a": [-5, 6], "b": [5, 6], "one_sided": false}],
+    "balls": [{"position": [0, 0], "radius": 0.5, "mass": 1}]})");
+  ASSERT_EQ(s.walls.size(), 3u);
+  EXPECT_FALSE(s.walls[0].oneSided);
+  EXPECT_TRUE(s.walls[1].oneSided);
+  EXPECT_FALSE(s.walls[2].oneSided);
 }
 
 TEST(Loader, ForceDefaults) {

@@ -15,6 +15,7 @@ TEST(SceneWriter, RoundTripsEveryField) {
   s.walls = boxWalls({0, 0}, {4, 3});
   s.walls[1].restitution = 0.25;
   s.walls[2].friction = 0.1;
+  s.walls[3].oneSided = false;  // the others are one-sided, as boxWalls makes them
   BallDef a;
   a.position = {1.0 / 3.0, 1};
   a.velocity = {2e-7, -1e6};
@@ -58,6 +59,7 @@ TEST(SceneWriter, RoundTripsEveryField) {
     EXPECT_EQ(r.walls[i].b, s.walls[i].b);
     EXPECT_EQ(r.walls[i].restitution, s.walls[i].restitution);
     EXPECT_EQ(r.walls[i].friction, s.walls[i].friction);
+    EXPECT_EQ(r.walls[i].oneSided, s.walls[i].oneSided);
   }
   ASSERT_EQ(r.balls.size(), 2u);
   for (std::size_t i = 0; i < 2; ++i) {

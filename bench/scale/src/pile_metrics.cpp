@@ -6,6 +6,16 @@
 
 namespace particles::pile {
 
+long long countOutside(std::span<const BallState> balls, const Vec2& lo, const Vec2& hi) {
+  long long out = 0;
+  for (const BallState& b : balls) {
+    const Vec2& x = b.position;
+    // Written so that a NaN centre counts as outside.
+    out += !(x.x() >= lo.x() && x.x() <= hi.x() && x.y() >= lo.y() && x.y() <= hi.y());
+  }
+  return out;
+}
+
 OverlapFigures measureOverlap(std::span<const BallState> balls, std::span<const BallDef> defs) {
   std::vector<Vec2> position(balls.size());
   std::vector<double> radius(balls.size());

@@ -37,17 +37,25 @@ struct BallDef {
   double resolvedInertia() const { return inertia ? *inertia : diskInertia(mass, radius); }
 };
 
-// A static, two-sided line segment from a to b. Walls never move; in the
-// contact formulas they are a body with zero inverse mass and inertia.
+// A static line segment from a to b. Walls never move; in the contact
+// formulas they are a body with zero inverse mass and inertia.
 struct WallDef {
   Vec2 a{0.0, 0.0};  // m
   Vec2 b{1.0, 0.0};  // m
   std::optional<double> restitution;
   std::optional<double> friction;
+  // Two-sided (false): a touching ball is pushed out on the side its centre
+  // is on. One-sided (true): balls belong on the left of a -> b (the side a
+  // box's walls face) and a touching ball whose centre has crossed to the
+  // right is pushed back to the left, not on through. A pile pressing a ball
+  // against a box wall can move its centre past the wall's line within one
+  // step; a two-sided wall then lets it out (docs/scale.md, "Walls with a
+  // side").
+  bool oneSided = false;
 };
 
-// Four walls enclosing the axis-aligned box [lo, hi], in the order bottom,
-// right, top, left.
+// Four one-sided walls enclosing the axis-aligned box [lo, hi], facing in,
+// in the order bottom, right, top, left (counter-clockwise).
 std::vector<WallDef> boxWalls(const Vec2& lo, const Vec2& hi);
 
 enum class ForceType {

@@ -24,6 +24,13 @@ struct OverlapFigures {
 
 OverlapFigures measureOverlap(std::span<const BallState> balls, std::span<const BallDef> defs);
 
+// Balls whose centre lies outside the box [lo, hi] (m), borders included as
+// inside: balls that left the pile's box. A ball in the box keeps its centre
+// at least its radius from every wall, so any count above 0 is a defect (a
+// one-sided wall puts a ball that crossed it back the next step; docs/scale.md,
+// "Walls with a side").
+long long countOutside(std::span<const BallState> balls, const Vec2& lo, const Vec2& hi);
+
 // Total kinetic energy, J: sum of m |v|^2 / 2 + J w^2 / 2 with the masses and
 // inertias of `defs` (same order as `balls`).
 double kineticEnergy(std::span<const BallState> balls, std::span<const BallDef> defs);
