@@ -6,6 +6,8 @@
 #include <tuple>
 
 #include "particles/broad_phase.h"
+#include "particles/material.h"
+#include "particles/swept_wall.h"
 #include "particles/world.h"
 #include "scale_common.h"
 
@@ -192,6 +194,46 @@ inline void supportRow(ScaleSolver::Motion* m, const ScaleSolver::Row& r, Vec2 d
   upper.velocity += (below > 0.0 ? gn - goal : goal - gn) * n;
 }
 
+// A ball moving further this step than the rows' margin (0.2 of the largest
+// radius, scale_rows.cpp; 0.2 of its own is a safe test) may reach a wall
+// it has no row with: its speed can come from this step's impulses, as when
+// a ball landing on the 100,000 pile is thrown sideways at 30 m/s
+// (docs/scale.md, "Walls with a side").
+inline bool movesPastTheMargin(const Vec2& v, double radius, double dt) {
+  const double reach = 0.2 * radius;
+  return v.squaredNorm() * (dt * dt) > reach * reach;
+}
+
+// The wall guard for such a ball: if its straight path this step meets a
+// wall (the first one met, swept_wall.h), its normal velocity bounces there
+// with the mixed restitution, -e times the approach, and it moves with the
+// old velocity up to the time of impact and with the new one after (as
+// SolverSettings::sweptWalls does on the small path). No friction and no
+// spin change: the guard is for the rare ball flying at a wall, not for
+// the contacts the rows resolve.
+inline void moveGuarded(ScaleSolver::CellBall& ball, ScaleSolver::Motion& m, const ScaleBodies& s) {
+  std::optional<SweptHit> first;
+  std::size_t wall = 0;
+  for (std::size_t w = 0; w < s.walls.size(); ++w) {
+    const std::optional<SweptHit> hit =
+        sweepAgainstWall(ball.position, m.velocity, ball.radius, s.walls[w], s.dt);
+    if (hit && (!first || hit->time < first->time)) {
+      first = hit;
+      wall = w;
+    }
+  }
+  const double vn = first ? m.velocity.dot(first->normal) : 0.0;  // > 0: towards the wall
+  if (vn <= 0.0) {
+    ball.position += s.dt * m.velocity;
+    return;
+  }
+  const ContactMaterial mix =
+      mixMaterials(s.material[static_cast<std::size_t>(ball.index)], s.wallMaterial[wall]);
+  const Vec2 before = m.velocity;
+  m.velocity -= ((1.0 + mix.restitution) * vn) * first->normal;
+  ball.position += first->time * before + (s.dt - first->time) * m.velocity;
+}
+
 // Moves a row's bodies apart by their whole overlap, shared by inverse mass
 // (a wall takes none): the small-scene projection of world.cpp, per row.
 // Under gravity with shock propagation (SolverSettings::scaleShockPropagation)
@@ -292,6 +334,8 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
   const double shock = std::clamp(settings.scaleShockPropagation, 0.0, 1.0);
   // Without gravity there is no "upper" ball: no support sweep.
   const bool supportSweep = settings.scaleVelocityShock && s.down.squaredNorm() > 0.0;
+  // Without walls there is nothing to guard against.
+  const bool guard = !s.walls.empty();
   // What each thread saw of the overlap, written once per row: one cache
   // line per thread, or the two threads fight over one line on every row
   // (measured: 2 threads gained 1.07x at N = 10,000 with them side by side).
@@ -374,7 +418,12 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
     });
     if (supportSweep) byStrip(t, [&](std::size_t k) { supportRow(m, rows_[k], s.down); });
 
-    for (std::size_t k = b; k < e; ++k) ball[k].position += s.dt * m[k].velocity;
+    for (std::size_t k = b; k < e; ++k) {
+      if (guard && movesPastTheMargin(m[k].velocity, ball[k].radius, s.dt))
+        moveGuarded(ball[k], m[k], s);
+      else
+        ball[k].position += s.dt * m[k].velocity;
+    }
     pool.sync();
 
     double& deepest = seen[static_cast<std::size_t>(t)].deepest;
