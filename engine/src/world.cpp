@@ -180,7 +180,10 @@ void World::scaleStep() {
   b.walls = scene_.walls;
   b.wallMaterial = wallMaterial_;
   b.dt = dt_;
-  if (plan_.gravity && scene_.gravity.squaredNorm() > 0.0) b.down = scene_.gravity.normalized();
+  if (plan_.gravity && scene_.gravity.squaredNorm() > 0.0) {
+    b.down = scene_.gravity.normalized();
+    b.gravityStep = scene_.gravity.norm() * dt_;
+  }
   b.spin = plan_.spin;
   scaleSolver_.step(b, scene_.solver, stats_, recordImpacts_ ? &impacts_ : nullptr);
 }

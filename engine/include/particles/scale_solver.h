@@ -33,9 +33,10 @@ struct ScaleBodies {
   std::span<const Vec2> forcedVelocity;  // m/s, this step's forces; empty = none
   std::span<const WallDef> walls;
   std::span<const ContactMaterial> wallMaterial;
-  Vec2 down{0.0, 0.0};  // unit vector along gravity; zero without gravity
-  double dt = 0.0;      // s
-  bool spin = false;    // integrate angles
+  Vec2 down{0.0, 0.0};       // unit vector along gravity; zero without gravity
+  double gravityStep = 0.0;  // m/s, |g| dt: what gravity adds to a velocity in one step
+  double dt = 0.0;           // s
+  bool spin = false;         // integrate angles
 };
 
 class ScaleSolver {
