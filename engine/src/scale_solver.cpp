@@ -6,6 +6,7 @@
 #include <tuple>
 
 #include "particles/broad_phase.h"
+#include "particles/contact_impulse.h"
 #include "particles/material.h"
 #include "particles/swept_wall.h"
 #include "particles/world.h"
@@ -226,12 +227,13 @@ inline bool movesPastTheMargin(const Vec2& v, double radius, double dt) {
 }
 
 // The wall guard for such a ball: if its straight path this step meets a
-// wall (the first one met, swept_wall.h), its normal velocity bounces there
-// with the mixed restitution, -e times the approach, and it moves with the
-// old velocity up to the time of impact and with the new one after (as
-// SolverSettings::sweptWalls does on the small path). No friction and no
-// spin change: the guard is for the rare ball flying at a wall, not for
-// the contacts the rows resolve.
+// wall (the first one met, swept_wall.h), it takes the impact there with the
+// handout's impulse (resolveImpact: the ball is body a, the wall body b with
+// zero inverse mass and inertia, the same code path as every wall contact),
+// so the bounce is -e times the approach it brought, and friction and spin
+// act as at any other wall. It moves with the old velocity up to the time of
+// impact and with the new one after (as SolverSettings::sweptWalls does on
+// the small path).
 inline void moveGuarded(ScaleSolver::CellBall& ball, ScaleSolver::Motion& m, const ScaleBodies& s) {
   std::optional<SweptHit> first;
   std::size_t wall = 0;
@@ -243,15 +245,21 @@ inline void moveGuarded(ScaleSolver::CellBall& ball, ScaleSolver::Motion& m, con
       wall = w;
     }
   }
-  const double vn = first ? m.velocity.dot(first->normal) : 0.0;  // > 0: towards the wall
-  if (vn <= 0.0) {
+  // first->normal points from the ball to the wall: > 0 is approaching.
+  if (!first || m.velocity.dot(first->normal) <= 0.0) {
     ball.position += s.dt * m.velocity;
     return;
   }
-  const ContactMaterial mix =
-      mixMaterials(s.material[static_cast<std::size_t>(ball.index)], s.wallMaterial[wall]);
+  const auto index = static_cast<std::size_t>(ball.index);
+  ContactBody self{m.velocity, m.angularVelocity,
+                   m.invMass,  m.invInertia,
+                   m.radius,   s.forcedVelocity.empty() ? Vec2(0.0, 0.0) : s.forcedVelocity[index]};
+  ContactBody theWall;
   const Vec2 before = m.velocity;
-  m.velocity -= ((1.0 + mix.restitution) * vn) * first->normal;
+  resolveImpact(self, theWall, first->normal,
+                mixMaterials(s.material[index], s.wallMaterial[wall]));
+  m.velocity = self.velocity;
+  m.angularVelocity = self.angularVelocity;
   ball.position += first->time * before + (s.dt - first->time) * m.velocity;
 }
 

@@ -4,15 +4,23 @@
 // comes to rest and keeps its disks apart.
 //
 // The 2,000-disk pile of issue 5 (radius 0.5 m, mu = 0.5, e = 0.5, dropped
-// from a loose grid into a box) with the default settings. At rest means the
-// issue's criterion (pile_metrics.h): the kinetic energy stays at or below
-// that of the whole mass moving at 1 cm/s. With plain Gauss-Seidel (w = 1)
-// and the same 2 overlap-removal passes, neither seed below was at rest by
-// step 600 (1 of 8 seeds was; docs/scale.md), and the largest overlaps were
-// 0.42 and 0.48 % of the radius.
+// from a loose grid into a box) with the default settings, over the issue's
+// 600 steps. At rest means the issue's criterion (pile_metrics.h): the
+// kinetic energy stays at or below that of the whole mass moving at 1 cm/s,
+// here over the last 50 steps at least.
+//
+// Whether one given seed is at rest by then is chaos: a change at the
+// rounding level anywhere in the step gives another pile, and a settled pile
+// sometimes has an arch give way a hundred steps later (docs/scale.md,
+// "Coming to rest is counted over seeds"). So the test counts seeds. With
+// the default over-relaxation 6 of these 8 seeds were at rest (34 of 36 over
+// seeds 20261201-36); with plain Gauss-Seidel (w = 1) none was (7 never at
+// rest, one from step 563). At least 5 of 8 separates the two: for a solver
+// that rests 90 % of its seeds, 5 or more of 8 fails once in 200 changes.
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <cstdio>
 #include <vector>
 
 #include "particles/pile/pile_metrics.h"
@@ -22,34 +30,41 @@
 namespace particles::pile {
 namespace {
 
-constexpr long long kSteps = 400;  // 6.7 s of 1/60 s
+constexpr long long kSteps = 600;     // 10 s of 1/60 s
+constexpr long long kAtRestFor = 50;  // steps
+constexpr int kSeeds = 8;
+constexpr int kAtRestAtLeast = 5;
 
-class SettledPile : public testing::TestWithParam<std::uint64_t> {};
-
-TEST_P(SettledPile, ComesToRestWithItsDisksApart) {
-  PileParams p;
-  p.count = 2000;
-  p.seed = GetParam();
-  const SceneDef scene = makePile(p);
-  ASSERT_GT(scene.solver.scaleOverRelaxation, 1.0);
-  World world(scene);
-  ASSERT_TRUE(world.plan().scale);
-  std::vector<double> energy;
-  for (long long s = 0; s < kSteps; ++s) {
-    world.step();
-    energy.push_back(kineticEnergy(world.balls(), scene.balls));
+TEST(SettledPile, MostSeedsComeToRestWithTheirDisksApart) {
+  int atRest = 0;
+  for (int k = 0; k < kSeeds; ++k) {
+    PileParams p;
+    p.count = 2000;
+    p.seed = 20261201u + static_cast<std::uint64_t>(k);
+    const SceneDef scene = makePile(p);
+    ASSERT_GT(scene.solver.scaleOverRelaxation, 1.0);
+    World world(scene);
+    ASSERT_TRUE(world.plan().scale);
+    std::vector<double> energy;
+    for (long long s = 0; s < kSteps; ++s) {
+      world.step();
+      energy.push_back(kineticEnergy(world.balls(), scene.balls));
+    }
+    const std::optional<long long> rest = restStep(energy, restEnergy(scene.balls));
+    const bool settled = rest && *rest <= kSteps - kAtRestFor;
+    atRest += settled ? 1 : 0;
+    // Overlap, as a fraction of the smaller radius: a pile at rest keeps its
+    // disks apart to 0.1 %; one where an arch is still giving way within the
+    // issue's bound for a pile at rest, 5 %.
+    const OverlapFigures overlap = measureOverlap(world.balls(), scene.balls);
+    EXPECT_GT(overlap.touchingPairs, 2000) << "seed " << p.seed;  // a pile, not a gas
+    EXPECT_LT(overlap.max, settled ? 1e-3 : 0.05) << "seed " << p.seed;
+    std::printf("seed %llu: %s, kinetic energy at the end %.3g J, max overlap %.3g %%\n",
+                static_cast<unsigned long long>(p.seed), settled ? "at rest" : "not at rest",
+                energy.back(), 100.0 * overlap.max);
   }
-  const std::optional<long long> rest = restStep(energy, restEnergy(scene.balls));
-  ASSERT_TRUE(rest.has_value()) << "kinetic energy at the end " << energy.back() << " J";
-  // A pile at rest, not one that just passed through a slow moment: it has
-  // stayed at rest over the last 50 steps at least.
-  EXPECT_LE(*rest, kSteps - 50);
-  const OverlapFigures overlap = measureOverlap(world.balls(), scene.balls);
-  EXPECT_GT(overlap.touchingPairs, 2000);  // a pile, not a gas
-  EXPECT_LT(overlap.max, 1e-3);            // of the smaller radius
+  EXPECT_GE(atRest, kAtRestAtLeast) << "of " << kSeeds << " seeds";
 }
-
-INSTANTIATE_TEST_SUITE_P(Seeds, SettledPile, testing::Values(20261201u, 20261206u));
 
 }  // namespace
 }  // namespace particles::pile

@@ -5,6 +5,8 @@
 // the left wall, dt = 1/60 s (u dt = 1 m = 2 r).
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "large_path_scene.h"
 #include "particles/world.h"
 
@@ -39,6 +41,59 @@ TEST(ScaleWallSide, AFastBallWithoutAWallRowBouncesAtItsTimeOfImpact) {
   EXPECT_NEAR(w.ball(0).velocity.x(), kE * kSpeed, 1e-12);
   EXPECT_NEAR(w.ball(0).velocity.y(), 0.0, 1e-12);
   EXPECT_EQ(w.ball(0).angularVelocity, 0.0);
+}
+
+// The same ball moving obliquely, (-u, w) with w = 20 m/s along the wall and
+// no spin, with no wall row: the guard's impact is the handout's wall impact,
+// worked out here for a uniform disk (m = 1 kg, J = m r^2 / 2). Normal
+// impulse on the ball P_n = m (1 + e) u = 90 N s along +x. The contact point
+// (-r, 0) from the centre slips along +y at w - omega r = 20 m/s; a
+// tangential impulse P_t changes that slip by P_t (1/m + r^2/J) = 3 P_t / m,
+// so no-slip needs P_t = -20/3 N s, within mu P_n when mu = 0.5 (sticks)
+// and clamped to -mu P_n = -4.5 N s when mu = 0.05 (slides). Then
+// v_y' = w + P_t / m and omega' = -r P_t / J (the torque of P_t about the
+// centre). Angular momentum about the contact point, J omega + m r v_y, is
+// the same before and after: the impulse acts at that point.
+struct ObliqueGuardCase {
+  double friction;
+  double tangentImpulse;  // N s, P_t worked out above
+};
+
+void expectTheHandoutsWallImpact(const ObliqueGuardCase& c) {
+  constexpr double kAlong = 20.0;  // m/s
+  constexpr double kR = 0.5, kMass = 1.0, kJ = kMass * kR * kR / 2.0;
+  SceneDef scene = ballAtTheLeftWall(0.8, true);
+  scene.contact = {kE, c.friction};
+  scene.balls[0].velocity = {-kSpeed, kAlong};
+  World w(scene);
+  w.step();
+  const BallState b = w.ball(0);
+  const double vy = kAlong + c.tangentImpulse / kMass;
+  const double omega = -kR * c.tangentImpulse / kJ;
+  const double impact = 0.3 / kSpeed;  // s, time of impact
+  EXPECT_NEAR(b.velocity.x(), kE * kSpeed, 1e-12);
+  EXPECT_NEAR(b.velocity.y(), vy, 1e-12);
+  EXPECT_NEAR(b.angularVelocity, omega, 1e-12);
+  EXPECT_NEAR(b.position.x(), 0.5 + kE * kSpeed * (kDt - impact), 1e-12);
+  EXPECT_NEAR(b.position.y(), 5.0 + kAlong * impact + vy * (kDt - impact), 1e-12);
+  // Invariants, whatever the regime: angular momentum about the contact
+  // point kept, the Coulomb bound |P_t| <= mu P_n, kinetic energy not grown.
+  EXPECT_NEAR(kJ * b.angularVelocity + kMass * kR * b.velocity.y(), kMass * kR * kAlong, 1e-12);
+  const double normalImpulse = kMass * (b.velocity.x() + kSpeed);
+  const double tangentImpulse = kMass * (b.velocity.y() - kAlong);
+  EXPECT_LE(std::abs(tangentImpulse), c.friction * normalImpulse * (1.0 + 1e-12));
+  const double before = 0.5 * kMass * (kSpeed * kSpeed + kAlong * kAlong);
+  const double after =
+      0.5 * kMass * b.velocity.squaredNorm() + 0.5 * kJ * b.angularVelocity * b.angularVelocity;
+  EXPECT_LT(after, before);
+}
+
+TEST(ScaleWallSide, AnObliqueFastBallSticksLikeAnyWallImpact) {
+  expectTheHandoutsWallImpact({0.5, -20.0 / 3.0});
+}
+
+TEST(ScaleWallSide, AnObliqueFastBallSlidesWhenFrictionIsTooWeak) {
+  expectTheHandoutsWallImpact({0.05, -0.05 * (1.0 + kE) * kSpeed});
 }
 
 // Centre 0.2 m past the left wall's line (as a ball pressed through by its
