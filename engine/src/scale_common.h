@@ -2,8 +2,12 @@
 // rows, scale_solver.cpp solves them) share.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <utility>
+
+#include "particles/scene.h"
+#include "particles/types.h"
 
 namespace particles::scale {
 
@@ -15,6 +19,15 @@ constexpr int kMaxStrips = 32;
 inline std::pair<std::size_t, std::size_t> part(std::size_t n, int t, int threads) {
   const std::size_t tt = static_cast<std::size_t>(t), tn = static_cast<std::size_t>(threads);
   return {n * tt / tn, n * (tt + 1) / tn};
+}
+
+// Whether the wall's segment lies wholly outside the box [lo, hi] (m): a
+// ball whose reach stays inside the box cannot touch the wall. Most balls of
+// a large scene are far from every wall, and this skips the segment
+// distance. A NaN corner compares false: not outside.
+inline bool wallOutsideBox(const Vec2& lo, const Vec2& hi, const WallDef& wall) {
+  return hi.x() < std::min(wall.a.x(), wall.b.x()) || lo.x() > std::max(wall.a.x(), wall.b.x()) ||
+         hi.y() < std::min(wall.a.y(), wall.b.y()) || lo.y() > std::max(wall.a.y(), wall.b.y());
 }
 
 }  // namespace particles::scale

@@ -49,14 +49,10 @@ inline int* nearBalls(const ScaleSolver::CellBall* base, int begin, int end, Vec
 }
 
 // Whether a ball (centre x, radius grown by the margin) reaches a wall, with
-// the hit as touchWall gives it. A ball outside the wall's box grown by its
-// reach cannot touch it: most balls of a pile skip the segment distance.
+// the hit as touchWall gives it.
 inline bool nearWall(const Vec2& x, double grown, const WallDef& wall, WallHit& hit) {
-  if (x.x() + grown < std::min(wall.a.x(), wall.b.x()) ||
-      x.x() - grown > std::max(wall.a.x(), wall.b.x()) ||
-      x.y() + grown < std::min(wall.a.y(), wall.b.y()) ||
-      x.y() - grown > std::max(wall.a.y(), wall.b.y()))
-    return false;
+  const Vec2 reach(grown, grown);
+  if (scale::wallOutsideBox(x - reach, x + reach, wall)) return false;
   return touchWall(x, grown, wall, hit);
 }
 
