@@ -16,7 +16,8 @@
 // the default over-relaxation 6 of these 8 seeds were at rest (34 of 36 over
 // seeds 20261201-36); with plain Gauss-Seidel (w = 1) none was (7 never at
 // rest, one from step 563). At least 5 of 8 separates the two: for a solver
-// that rests 90 % of its seeds, 5 or more of 8 fails once in 200 changes.
+// that rests 90 % of its seeds, requiring 5 or more of 8 fails about once in
+// 200 changes.
 #include <gtest/gtest.h>
 
 #include <cstdint>
