@@ -34,10 +34,13 @@ html::Plot scenePlot(const std::string& scene, const std::vector<BenchRun>& runs
   p.logX = p.logY = true;
   const char* engines[] = {"engine", "box2d"};
   for (int k = 0; k < 2; ++k) {
-    html::Series all{std::string(k == 0 ? "engine" : "Box2D") + ", every run", {}, "points",
-                     k == 0 ? 6 : 4, k};
-    html::Series front{std::string(k == 0 ? "engine" : "Box2D") + ", Pareto front", {},
-                       "linespoints", k == 0 ? 7 : 5, k};
+    html::Series all{
+        std::string(k == 0 ? "engine" : "Box2D") + ", every run", {}, "points", k == 0 ? 6 : 4, k};
+    html::Series front{std::string(k == 0 ? "engine" : "Box2D") + ", Pareto front",
+                       {},
+                       "linespoints",
+                       k == 0 ? 7 : 5,
+                       k};
     std::vector<std::pair<double, double>> f;
     for (const BenchRun& r : runs) {
       if (r.scene != scene || r.engine != engines[k] || !std::isfinite(r.error)) continue;
@@ -77,7 +80,8 @@ void writeBenchReport(const std::string& dir, const BenchResults& results) {
   for (const BenchSceneSummary& s : results.scenes) {
     double be = INFINITY, bb = INFINITY;
     for (const BenchRun& r : results.runs)
-      if (r.scene == s.scene) (r.engine == "engine" ? be : bb) = std::min(r.engine == "engine" ? be : bb, r.error);
+      if (r.scene == s.scene)
+        (r.engine == "engine" ? be : bb) = std::min(r.engine == "engine" ? be : bb, r.error);
     std::string kind = s.kind;
     if (s.referenceConvergence >= 0) kind += " (converged to " + sci(s.referenceConvergence) + ")";
     summary.rows.push_back({s.scene, kind, s.description, sci(be), sci(bb), ratioText(s.ratio)});
@@ -93,7 +97,10 @@ void writeBenchReport(const std::string& dir, const BenchResults& results) {
                ": errors below that cannot be told apart and count as that for the fronts, "
                "so the plot shows runs left of it that are not on a front.");
     doc.plot(scenePlot(s.scene, results.runs));
-    html::Table front{"Pareto fronts (cheapest first)", {"engine", "configuration", "wall s / s", "error"}, {}, {}};
+    html::Table front{"Pareto fronts (cheapest first)",
+                      {"engine", "configuration", "wall s / s", "error"},
+                      {},
+                      {}};
     std::vector<BenchRun> rows;
     for (const BenchRun& r : results.runs)
       if (r.scene == s.scene && r.pareto) rows.push_back(r);
@@ -113,11 +120,15 @@ void writeBenchReport(const std::string& dir, const BenchResults& results) {
     doc.paragraph(
         "World::plan() switches off every stage a scene cannot use. Each row times the same "
         "scene with stages switched on by changes that cannot alter its motion (unless said).");
-    html::Table t{"ns per step (median)", {"study", "balls", "variant", "ns / step", "same final state"}, {}, {}};
+    html::Table t{"ns per step (median)",
+                  {"study", "balls", "variant", "ns / step", "same final state"},
+                  {},
+                  {}};
     for (const SkipRow& r : results.skip) {
       char ns[32];
       std::snprintf(ns, sizeof ns, "%.1f", r.nsPerStep);
-      t.rows.push_back({r.study, std::to_string(r.balls), r.variant, ns, r.sameResult ? "yes" : "no"});
+      t.rows.push_back(
+          {r.study, std::to_string(r.balls), r.variant, ns, r.sameResult ? "yes" : "no"});
     }
     doc.table(t);
     html::Plot p;
@@ -125,7 +136,8 @@ void writeBenchReport(const std::string& dir, const BenchResults& results) {
     p.xLabel = "balls";
     p.yLabel = "ns per step";
     p.logX = p.logY = true;
-    html::Series brute{"brute force", {}, "linespoints", 7, 0}, grid{"grid", {}, "linespoints", 5, 1};
+    html::Series brute{"brute force", {}, "linespoints", 7, 0},
+        grid{"grid", {}, "linespoints", 5, 1};
     for (const SkipRow& r : results.skip) {
       if (r.study != "broad phase") continue;
       (r.variant == "grid" ? grid : brute).points.push_back({r.balls, r.nsPerStep});

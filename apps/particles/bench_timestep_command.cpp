@@ -14,10 +14,10 @@
 #include "cli_common.h"
 #include "commands.h"
 #include "csv_field.h"
-#include "suite_output.h"
 #include "particles/reference/box2d_settings.h"
 #include "particles/scene_output.h"
 #include "particles/timestep/catalogue.h"
+#include "suite_output.h"
 
 namespace particles::cli {
 namespace {
@@ -25,14 +25,16 @@ namespace {
 using timestep::TimestepScene;
 
 struct Sweep {
-  std::vector<double> dtFactors;  // times the scene's base dt
-  std::vector<int> passes;        // engine contact passes
+  std::vector<double> dtFactors;                // times the scene's base dt
+  std::vector<int> passes;                      // engine contact passes
   std::vector<std::pair<int, int>> iterations;  // Box2D (velocity, position)
 };
 
 Sweep sweepFor(bool full) {
   if (full)
-    return {{8, 4, 2, 1, 0.5, 0.25, 0.125}, {64, 16, 4, 1}, {{8, 3}, {2, 1}, {3, 1}, {20, 8}, {50, 20}}};
+    return {{8, 4, 2, 1, 0.5, 0.25, 0.125},
+            {64, 16, 4, 1},
+            {{8, 3}, {2, 1}, {3, 1}, {20, 8}, {50, 20}}};
   return {{2, 1, 0.5, 0.25}, {64, 4}, {{8, 3}, {3, 1}, {20, 8}}};
 }
 
@@ -73,8 +75,8 @@ void writeCsv(const std::string& path, const std::vector<BenchRun>& runs) {
         << (engine ? "" : std::to_string(r.velocityIterations)) << ','
         << (engine ? "" : std::to_string(r.positionIterations)) << ',' << r.steps << ','
         << formatDouble(r.secondsPerSecond) << ','
-        << (std::isfinite(r.error) ? formatDouble(r.error) : "inf") << ','
-        << (r.pareto ? 1 : 0) << '\n';
+        << (std::isfinite(r.error) ? formatDouble(r.error) : "inf") << ',' << (r.pareto ? 1 : 0)
+        << '\n';
   }
   if (!out) throw std::runtime_error("error writing " + path);
 }
@@ -138,28 +140,34 @@ std::string ratioText(const std::optional<timestep::EqualErrorRatio>& r) {
 }
 
 void addTimestepBenchOptions(CLI::App& bench, TimestepBenchOptions& o) {
-  bench.add_option("--repeats", o.repeats, "Timed runs per configuration (the median counts), 1 to 1000")
+  bench
+      .add_option("--repeats", o.repeats,
+                  "Timed runs per configuration (the median counts), 1 to 1000")
       ->type_name("N")
       ->default_val(o.repeats)
       ->check(integerInRange(1, 1000));
-  bench.add_flag("--full", o.full,
-                 "Wider sweep: dt x 8 .. x 1/8, contact passes 64/16/4/1, five Box2D iteration pairs");
-  bench.add_option("--scene", o.scenes,
-                   "Only these catalogue scenes (repeatable): bounce, slide_roll, incline_roll, "
-                   "oblique_spin, pull, cradle, billiards, pile, gas")
+  bench.add_flag(
+      "--full", o.full,
+      "Wider sweep: dt x 8 .. x 1/8, contact passes 64/16/4/1, five Box2D iteration pairs");
+  bench
+      .add_option("--scene", o.scenes,
+                  "Only these catalogue scenes (repeatable): bounce, slide_roll, incline_roll, "
+                  "oblique_spin, pull, cradle, billiards, pile, gas")
       ->type_name("NAME")
       ->check(CLI::IsMember({"bounce", "slide_roll", "incline_roll", "oblique_spin", "pull",
                              "cradle", "billiards", "pile", "gas"}));
-  bench.add_option("--csv", o.csv,
-                   "The sweep as CSV, one row per configuration (with --scale: the pile's figures, "
-                   "default pile.csv)")
+  bench
+      .add_option("--csv", o.csv,
+                  "The sweep as CSV, one row per configuration (with --scale: the pile's figures, "
+                  "default pile.csv)")
       ->type_name("FILE")
       ->default_val(o.csv);
   bench.add_option("--skip-csv", o.skipCsv, "The skip study as CSV")
       ->type_name("FILE")
       ->default_val(o.skipCsv);
-  bench.add_option("--report", o.report,
-                   "Also write DIR/index.html (tables and runtime-vs-error plots) with both CSVs")
+  bench
+      .add_option("--report", o.report,
+                  "Also write DIR/index.html (tables and runtime-vs-error plots) with both CSVs")
       ->type_name("DIR");
   bench.add_flag("--no-skip-study", o.noSkipStudy, "Leave out the skip study");
 }
@@ -225,7 +233,8 @@ int runTimestepBench(const TimestepBenchOptions& o) {
     if (!o.report.empty()) {
       namespace fs = std::filesystem;
       writeCsv((fs::path(o.report) / "bench.csv").string(), results.runs);
-      if (!o.noSkipStudy) writeSkipCsv((fs::path(o.report) / "bench_skip.csv").string(), results.skip);
+      if (!o.noSkipStudy)
+        writeSkipCsv((fs::path(o.report) / "bench_skip.csv").string(), results.skip);
       writeBenchReport(o.report, results);
     }
   } catch (const std::exception& e) {

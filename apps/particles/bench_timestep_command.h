@@ -18,7 +18,7 @@ struct TimestepBenchOptions {
   std::vector<std::string> scenes;  // catalogue names; empty = all
   std::string csv = "bench.csv";    // the sweep, one row per configuration
   std::string skipCsv = "bench_skip.csv";
-  std::string report;               // DIR for index.html; empty = none
+  std::string report;  // DIR for index.html; empty = none
   bool noSkipStudy = false;
 };
 

@@ -118,8 +118,9 @@ void addMergeCommand(CLI::App& app, CommandAction& action) {
                   "Shard report directories (DIR/report.json) or report.json files")
       ->required()
       ->type_name("DIR...");
-  cmd->add_option("--report", o->report,
-                  "Directory for the merged report.json, report.md and index.html, created if missing")
+  cmd->add_option(
+         "--report", o->report,
+         "Directory for the merged report.json, report.md and index.html, created if missing")
       ->type_name("DIR")
       ->default_val(o->report);
   cmd->add_option("--records", o->records,

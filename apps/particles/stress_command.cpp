@@ -76,7 +76,9 @@ std::string urlPath(const fs::path& p) {
   return u;
 }
 
-std::string verdictText(const Verdict& v) { return v.stable ? "stable" : "BROKEN (" + v.reasons + ")"; }
+std::string verdictText(const Verdict& v) {
+  return v.stable ? "stable" : "BROKEN (" + v.reasons + ")";
+}
 
 void writeCsv(const fs::path& file, const std::vector<StressRow>& rows) {
   std::ofstream out(file);
@@ -113,12 +115,16 @@ void writeReport(const fs::path& dir, const std::vector<StressRow>& rows, bool l
                   : "") +
       (sweptBalls ? " The engine ran with continuous collision between balls (--swept-balls)."
                   : ""));
-  html::Table t{"Envelope", {"axis", "value", "engine", "Box2D", "overlap at rest (engine / Box2D, / r)", "scene"}, {}, {}};
+  html::Table t{
+      "Envelope",
+      {"axis", "value", "engine", "Box2D", "overlap at rest (engine / Box2D, / r)", "scene"},
+      {},
+      {}};
   for (const StressRow& r : rows) {
-    t.rows.push_back({r.c->axis, r.c->value, verdictText(r.engineVerdict),
-                      verdictText(r.box2dVerdict),
-                      r.engine.atRest ? sci(r.engine.overlapAtRest) + " / " + sci(r.box2d.overlapAtRest) : "",
-                      r.scenePath});
+    t.rows.push_back(
+        {r.c->axis, r.c->value, verdictText(r.engineVerdict), verdictText(r.box2dVerdict),
+         r.engine.atRest ? sci(r.engine.overlapAtRest) + " / " + sci(r.box2d.overlapAtRest) : "",
+         r.scenePath});
     t.rowClass.push_back(r.engineVerdict.stable && r.box2dVerdict.stable ? "good" : "bad");
     // The link is relative to index.html (the scene file exists by now), so
     // the report opens from anywhere and survives being moved with its scenes.
@@ -197,8 +203,8 @@ int stress(const StressOptions& o) {
     std::printf("%-14s %-12s %-44s %s\n", r.c->axis.c_str(), r.c->value.c_str(),
                 verdictText(r.engineVerdict).c_str(), verdictText(r.box2dVerdict).c_str());
     if (r.c->endsAtRest)
-      std::printf("%-27s overlap at rest %s r, kinetic energy %s J | overlap %s r, kinetic %s J\n", "",
-                  sci(r.engine.overlapAtRest).c_str(), sci(r.engine.kineticAtEnd).c_str(),
+      std::printf("%-27s overlap at rest %s r, kinetic energy %s J | overlap %s r, kinetic %s J\n",
+                  "", sci(r.engine.overlapAtRest).c_str(), sci(r.engine.kineticAtEnd).c_str(),
                   sci(r.box2d.overlapAtRest).c_str(), sci(r.box2d.kineticAtEnd).c_str());
     broken += !r.scenePath.empty();
   }
@@ -213,7 +219,8 @@ int stress(const StressOptions& o) {
 
 void addStressCommand(CLI::App& app, CommandAction& action) {
   CLI::App* cmd = app.add_subcommand(
-      "stress", "Map the numerical stability envelope of the engine and Box2D; write broken cases as scenes");
+      "stress",
+      "Map the numerical stability envelope of the engine and Box2D; write broken cases as scenes");
   cmd->footer(R"(Axes: mass ratio 1e-6..1e6, radius ratio 1e-3..1e3, speed 0.1..5 radii per step
 (into a wall and into a ball), grazing impacts, a long elastic gas, dense piles
 (overlap and kinetic energy at rest), scene scale 1e-4..1e4. Stable: no NaN or
@@ -234,9 +241,10 @@ findings, not failures); 1 on an I/O error; 2 on bad arguments.)");
                   "and the broken scenes go to DIR too")
       ->type_name("DIR");
   cmd->add_flag("--long", o->longGas, "Run the elastic gas for 1e6 steps instead of 1e4");
-  cmd->add_flag("--swept-walls", o->sweptWalls,
-                "Run the engine with continuous collision against walls (SolverSettings::sweptWalls; "
-                "the written scenes carry it as solver.swept_walls)");
+  cmd->add_flag(
+      "--swept-walls", o->sweptWalls,
+      "Run the engine with continuous collision against walls (SolverSettings::sweptWalls; "
+      "the written scenes carry it as solver.swept_walls)");
   cmd->add_flag("--swept-balls", o->sweptBalls,
                 "Run the engine with continuous collision between balls "
                 "(SolverSettings::sweptBalls; the written scenes carry it as solver.swept_balls)");

@@ -31,7 +31,8 @@ std::vector<std::pair<double, double>> cdf(const std::vector<double>& sorted) {
   std::vector<std::pair<double, double>> pts;
   const std::size_t n = sorted.size(), stride = std::max<std::size_t>(1, n / 200);
   for (std::size_t i = 0; i < n; i += stride)
-    pts.push_back({std::max(sorted[i], kFloor), static_cast<double>(i + 1) / static_cast<double>(n)});
+    pts.push_back(
+        {std::max(sorted[i], kFloor), static_cast<double>(i + 1) / static_cast<double>(n)});
   if (n > 0) pts.push_back({std::max(sorted.back(), kFloor), 1.0});
   return pts;
 }
@@ -50,9 +51,8 @@ void writeSuiteHtml(const std::filesystem::path& dir, const compare::SuiteResult
   }
   html::Document doc("particles suite: engine, closed form and Box2D");
   doc.paragraph(std::string(result.passed() ? "PASS" : "FAIL") + ": " +
-                std::to_string(result.cases.size()) + " cases, " +
-                std::to_string(result.failed()) + " failed, " +
-                std::to_string(result.unexplained()) +
+                std::to_string(result.cases.size()) + " cases, " + std::to_string(result.failed()) +
+                " failed, " + std::to_string(result.unexplained()) +
                 " unexplained Box2D discrepancies. Details per case: report.md and report.json "
                 "(docs/report-format.md).");
   doc.paragraph(
@@ -60,14 +60,19 @@ void writeSuiteHtml(const std::filesystem::path& dir, const compare::SuiteResult
       "divided by the case's speed scale. Engine: against the closed form (isolated cases "
       "only). Box2D: against the reference answer (the closed form where there is one, else "
       "the engine).");
-  html::Table t{"Per family", {"family", "cases", "failed", "engine median", "engine worst",
-                               "Box2D median", "Box2D 99 %", "Box2D worst"}, {}, {}};
+  html::Table t{"Per family",
+                {"family", "cases", "failed", "engine median", "engine worst", "Box2D median",
+                 "Box2D 99 %", "Box2D worst"},
+                {},
+                {}};
   for (compare::Family f : compare::kAllFamilies) {
     std::vector<double>& e = engine[f];
     std::vector<double>& b = box2d[f];
     std::sort(e.begin(), e.end());
     std::sort(b.begin(), b.end());
-    auto q = [](const std::vector<double>& v, double p) { return v.empty() ? "n/a" : sci(quantile(v, p)); };
+    auto q = [](const std::vector<double>& v, double p) {
+      return v.empty() ? "n/a" : sci(quantile(v, p));
+    };
     t.rows.push_back({std::string(compare::familyName(f)), std::to_string(cases[f]),
                       std::to_string(failed[f]), q(e, 0.5), q(e, 1.0), q(b, 0.5), q(b, 0.99),
                       q(b, 1.0)});

@@ -10,12 +10,23 @@ std::string escape(std::string_view text) {
   out.reserve(text.size());
   for (char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&#39;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -29,7 +40,9 @@ void Document::heading(const std::string& text, int level) {
   body_.append(">\n");
 }
 
-void Document::paragraph(const std::string& text) { body_ += "<p>" + escape(text) + "</p>\n"; }
+void Document::paragraph(const std::string& text) {
+  body_ += "<p>" + escape(text) + "</p>\n";
+}
 
 void Document::note(const std::string& text) {
   body_ += "<p class=\"note\">" + escape(text) + "</p>\n";

@@ -55,8 +55,8 @@ std::string script(const Plot& p, const fs::path& svg) {
   bool any = false;
   for (std::size_t i = 0; i < p.series.size(); ++i) {
     const Series& s = p.series[i];
-    g << (any ? ", " : "plot ") << "$d" << i << " using 1:2 with " << s.style
-      << " lc rgb '" << kPalette[static_cast<std::size_t>(s.color) % 8] << "'";
+    g << (any ? ", " : "plot ") << "$d" << i << " using 1:2 with " << s.style << " lc rgb '"
+      << kPalette[static_cast<std::size_t>(s.color) % 8] << "'";
     if (s.style != "lines") g << " pt " << s.pointType << " ps 0.9";
     if (s.style != "points") g << " lw 1.5";
     g << " title " << quoted(s.title) << " noenhanced";
@@ -76,9 +76,8 @@ bool gnuplotAvailable() {
 std::string renderSvg(const Plot& p) {
   static std::atomic<int> counter{0};
   if (!gnuplotAvailable()) return "";
-  const fs::path dir = fs::temp_directory_path() /
-                       ("particles-plot-" + std::to_string(::getpid()) + "-" +
-                        std::to_string(counter++));
+  const fs::path dir = fs::temp_directory_path() / ("particles-plot-" + std::to_string(::getpid()) +
+                                                    "-" + std::to_string(counter++));
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec) return "";

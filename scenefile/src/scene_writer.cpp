@@ -5,7 +5,9 @@
 namespace particles {
 namespace {
 
-nlohmann::json vec(const Vec2& v) { return nlohmann::json::array({v.x(), v.y()}); }
+nlohmann::json vec(const Vec2& v) {
+  return nlohmann::json::array({v.x(), v.y()});
+}
 
 nlohmann::json friction(double mu) {
   if (std::isinf(mu)) return "infinite";
@@ -30,10 +32,10 @@ nlohmann::json sceneJson(const SceneDef& s) {
   }
   j["balls"] = nlohmann::json::array();
   for (const BallDef& b : s.balls) {
-    nlohmann::json o{{"position", vec(b.position)},   {"velocity", vec(b.velocity)},
-                     {"angle", b.angle},              {"angular_velocity", b.angularVelocity},
-                     {"radius", b.radius},            {"mass", b.mass},
-                     {"inertia", b.resolvedInertia()}};
+    nlohmann::json o{
+        {"position", vec(b.position)},           {"velocity", vec(b.velocity)}, {"angle", b.angle},
+        {"angular_velocity", b.angularVelocity}, {"radius", b.radius},          {"mass", b.mass},
+        {"inertia", b.resolvedInertia()}};
     if (b.restitution) o["restitution"] = *b.restitution;
     if (b.friction) o["friction"] = friction(*b.friction);
     j["balls"].push_back(o);
@@ -63,6 +65,8 @@ nlohmann::json sceneJson(const SceneDef& s) {
   return j;
 }
 
-std::string sceneText(const SceneDef& scene) { return sceneJson(scene).dump(1) + "\n"; }
+std::string sceneText(const SceneDef& scene) {
+  return sceneJson(scene).dump(1) + "\n";
+}
 
 }  // namespace particles

@@ -65,7 +65,8 @@ TEST(HtmlDocument, PlotIsInlineSvgWithNothingLoaded) {
 TEST(HtmlDocument, DegradesToANoteWithoutGnuplot) {
   const char* old = std::getenv("PATH");
   const std::string saved = old ? old : "";
-  const std::filesystem::path empty = std::filesystem::temp_directory_path() / "particles-no-gnuplot";
+  const std::filesystem::path empty =
+      std::filesystem::temp_directory_path() / "particles-no-gnuplot";
   std::filesystem::create_directories(empty);
   ::setenv("PATH", empty.c_str(), 1);
   Document d("no plots");

@@ -41,7 +41,7 @@ TEST(FloorBounce, CatalogueCaseIsSliding) {
   const FloorBounce f = floorBounce(2.0, -1.0, 5.0, 0.5, 0.5, 0.5, 0.2);
   EXPECT_FALSE(f.sticking);
   EXPECT_DOUBLE_EQ(f.vy, 0.5);
-  EXPECT_DOUBLE_EQ(f.vx, 2.0 - 0.2 * 1.5);  // 1.7
+  EXPECT_DOUBLE_EQ(f.vx, 2.0 - 0.2 * 1.5);        // 1.7
   EXPECT_DOUBLE_EQ(f.w, 5.0 - 0.2 * 1.5 / 0.25);  // 3.8
   EXPECT_GT(f.vx + f.w * 0.5, 0.0);
 }
@@ -88,8 +88,8 @@ TEST_P(EngineMeetsClosedForms, WithinAFirstOrderBound) {
 //    4e-4 + 1e-4 = 5e-4.
 INSTANTIATE_TEST_SUITE_P(Catalogue, EngineMeetsClosedForms,
                          ::testing::Values(Case{"bounce", 1.3e-3}, Case{"slide_roll", 5.9e-4},
-                                           Case{"incline_roll", 2e-4},
-                                           Case{"oblique_spin", 4.5e-4}, Case{"pull", 5e-4}),
+                                           Case{"incline_roll", 2e-4}, Case{"oblique_spin", 4.5e-4},
+                                           Case{"pull", 5e-4}),
                          [](const auto& info) { return std::string(info.param.name); });
 
 // The cradle with e = 1 and mu = 0 transmits the momentum through the row

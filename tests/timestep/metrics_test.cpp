@@ -27,9 +27,9 @@ TEST(TimestepMetrics, ApexHeightsReadsTheTopOfEachArc) {
   double t = 0.0;
   for (int k = 1; k <= 3; ++k) {
     const double h = 1.01 * std::pow(e, 2 * k) * h0;
-    f.push_back({t += 0.1, {at(0, r + 0.01, 0, -3)}});  // falling onto the floor
-    f.push_back({t += 0.1, {at(0, r + 0.5 * h, 0, 2)}});  // rising
-    f.push_back({t += 0.1, {at(0, r + h, 0, 0.1)}});      // the top
+    f.push_back({t += 0.1, {at(0, r + 0.01, 0, -3)}});     // falling onto the floor
+    f.push_back({t += 0.1, {at(0, r + 0.5 * h, 0, 2)}});   // rising
+    f.push_back({t += 0.1, {at(0, r + h, 0, 0.1)}});       // the top
     f.push_back({t += 0.1, {at(0, r + 0.9 * h, 0, -1)}});  // falling: the arc ends
   }
   auto m = apexHeights(0, 0.0, r, e, h0, 3);
@@ -60,7 +60,7 @@ TEST(TimestepMetrics, SlideToRollTakesTheWorseOfTimeAndSpeed) {
 TEST(TimestepMetrics, SlideToRollFindsTheRollingTimeBetweenSamples) {
   const double r = 0.5;
   std::vector<Frame> f{{0.0, {at(0, r, 3.0)}},
-                       {0.3, {at(0.6, r, 2.1, 0, -3.6)}},        // slip 2.1 - 1.8 = 0.3
+                       {0.3, {at(0.6, r, 2.1, 0, -3.6)}},         // slip 2.1 - 1.8 = 0.3
                        {0.4, {at(0.8, r, 2.01, 0, -2.01 / r)}}};  // rolling
   auto m = slideToRoll(0, 3.0, r, 0.5, 0.3, 10.0);
   EXPECT_NEAR(run(f, *m), 0.005, 1e-12);
@@ -90,7 +90,8 @@ TEST(TimestepMetrics, ConstantAccelerationRelativeToTheFinalDistance) {
 // scale 1: 0.05): the worst of the three.
 TEST(TimestepMetrics, ExactTrajectoryTakesTheWorstComponent) {
   ExactState exact = [](double t) { return BallState{{t, 0}, {1, 0}, 0, 0}; };
-  std::vector<Frame> f{{0.0, {at(0, 0, 1)}}, {0.5, {at(0.51, 0, 1.03, 0, 0.1)}}, {1.0, {at(1, 0, 1)}}};
+  std::vector<Frame> f{
+      {0.0, {at(0, 0, 1)}}, {0.5, {at(0.51, 0, 1.03, 0, 0.1)}}, {1.0, {at(1, 0, 1)}}};
   auto m = exactTrajectory(0, exact, 0.5, 0.5, 1.0);
   EXPECT_NEAR(run(f, *m), 0.05, 1e-12);
 }
@@ -123,7 +124,8 @@ TEST(TimestepMetrics, ExactFinalStateReadsOnlyTheLastSample) {
 // E(0) = 1/2 * 2 * 1^2 + 1/2 * 1 * 0^2 = 1 J; later 1.03 J and 0.99 J: 3 %.
 TEST(TimestepMetrics, EnergyDriftIsTheLargestRelativeChange) {
   const double v = std::sqrt(1.03);
-  std::vector<Frame> f{{0.0, {at(0, 0, 1)}}, {0.1, {at(0, 0, v)}}, {0.2, {at(0, 0, std::sqrt(0.99))}}};
+  std::vector<Frame> f{
+      {0.0, {at(0, 0, 1)}}, {0.1, {at(0, 0, v)}}, {0.2, {at(0, 0, std::sqrt(0.99))}}};
   auto m = energyDrift({2.0}, {1.0});
   EXPECT_NEAR(run(f, *m), 0.03, 1e-12);
 }

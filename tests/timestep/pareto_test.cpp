@@ -12,8 +12,8 @@ namespace {
 TEST(Pareto, KeepsOnlyUnbeatenPointsSortedByTime) {
   // (2, 0.1) is beaten by (1, 0.05); (3, inf) diverged; (4, 0.01) and (8, 0.001) stay.
   const double inf = std::numeric_limits<double>::infinity();
-  const auto front =
-      paretoFront({{2, 0.1, 0}, {1, 0.05, 1}, {3, inf, 2}, {8, 0.001, 3}, {4, 0.01, 4}, {9, 0.01, 5}});
+  const auto front = paretoFront(
+      {{2, 0.1, 0}, {1, 0.05, 1}, {3, inf, 2}, {8, 0.001, 3}, {4, 0.01, 4}, {9, 0.01, 5}});
   ASSERT_EQ(front.size(), 3u);
   EXPECT_EQ(front[0].index, 1u);
   EXPECT_EQ(front[1].index, 4u);

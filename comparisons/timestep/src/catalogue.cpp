@@ -7,14 +7,13 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "particles/timestep/floor_bounce.h"
 #include "ball_def.h"
+#include "particles/timestep/floor_bounce.h"
 
 namespace particles::timestep {
 namespace {
 
 constexpr double kG = 9.81;  // m/s^2
-
 
 WallDef wall(Vec2 a, Vec2 b) {
   WallDef w;
@@ -49,7 +48,8 @@ struct SplitMix {
 TimestepScene bounce() {
   TimestepScene t;
   t.name = "bounce";
-  t.description = "ball dropped from h0 = 1 m on a floor, e = 0.8: apexes h_k = e^(2k) h0, k = 1..3";
+  t.description =
+      "ball dropped from h0 = 1 m on a floor, e = 0.8: apexes h_k = e^(2k) h0, k = 1..3";
   const double r = 0.5, h0 = 1.0, e = 0.8;
   SceneDef& s = t.scene;
   s.name = t.name;
@@ -66,7 +66,8 @@ TimestepScene bounce() {
 TimestepScene slideRoll() {
   TimestepScene t;
   t.name = "slide_roll";
-  t.description = "disk launched at v0 = 3 m/s without spin, mu = 0.3: rolls at 2/3 v0 from t = v0/(3 mu g)";
+  t.description =
+      "disk launched at v0 = 3 m/s without spin, mu = 0.3: rolls at 2/3 v0 from t = v0/(3 mu g)";
   const double r = 0.5, v0 = 3.0, mu = 0.3;
   SceneDef& s = t.scene;
   s.name = t.name;
@@ -83,7 +84,9 @@ TimestepScene slideRoll() {
 TimestepScene inclineRoll() {
   TimestepScene t;
   t.name = "incline_roll";
-  t.description = "disk released on a 20 degree incline, mu = 0.3 (tan 20 < 3 mu): s = a t^2/2, a = 2/3 g sin 20";
+  t.description =
+      "disk released on a 20 degree incline, mu = 0.3 (tan 20 < 3 mu): s = a t^2/2, a = 2/3 g sin "
+      "20";
   const double r = 0.5, theta = 20.0 * std::numbers::pi / 180.0, mu = 0.3;
   const Vec2 down(std::cos(theta), -std::sin(theta));
   const Vec2 normal(std::sin(theta), std::cos(theta));  // the incline's upper side
@@ -103,7 +106,9 @@ TimestepScene inclineRoll() {
 TimestepScene obliqueSpin() {
   TimestepScene t;
   t.name = "oblique_spin";
-  t.description = "spinning ball hits a floor obliquely (no gravity), e = 0.5, mu = 0.2: sliding impact, closed form";
+  t.description =
+      "spinning ball hits a floor obliquely (no gravity), e = 0.5, mu = 0.2: sliding impact, "
+      "closed form";
   const double r = 0.5, d = 0.1, e = 0.5, mu = 0.2, w0 = 5.0;
   const Vec2 v0(2.0, -1.0);
   SceneDef& s = t.scene;
@@ -154,7 +159,8 @@ TimestepScene pull() {
 TimestepScene cradle() {
   TimestepScene t;
   t.name = "cradle";
-  t.description = "Newton's cradle, 5 touching balls, e = 1, mu = 0: the last leaves at v0, the rest stay";
+  t.description =
+      "Newton's cradle, 5 touching balls, e = 1, mu = 0: the last leaves at v0, the rest stay";
   const double v0 = 2.0, r = 0.5;
   SceneDef& s = t.scene;
   s.name = t.name;
@@ -185,7 +191,9 @@ std::vector<double> positions(const Stepper& s) {
 TimestepScene billiards() {
   TimestepScene t;
   t.name = "billiards";
-  t.description = "break: cue ball at 6 m/s into a rack of 15 (1 mm gaps), e = 0.95, mu = 0.05; positions at 0.5 s, in radii";
+  t.description =
+      "break: cue ball at 6 m/s into a rack of 15 (1 mm gaps), e = 0.95, mu = 0.05; positions at "
+      "0.5 s, in radii";
   t.kind = MetricKind::ConvergedReference;
   const double r = 0.1, gap = 1e-3;
   SceneDef& s = t.scene;
@@ -218,7 +226,9 @@ std::vector<double> centreOfMassHeight(const Stepper& s) {
 TimestepScene pile() {
   TimestepScene t;
   t.name = "pile";
-  t.description = "200 balls dropped into a 3 m wide box, e = 0.3, mu = 0.5, 1.5 s: settled centre-of-mass height";
+  t.description =
+      "200 balls dropped into a 3 m wide box, e = 0.3, mu = 0.5, 1.5 s: settled centre-of-mass "
+      "height";
   t.kind = MetricKind::ConvergedReference;
   const double r = 0.1;
   SceneDef& s = t.scene;
@@ -245,7 +255,9 @@ TimestepScene pile() {
 TimestepScene gas() {
   TimestepScene t;
   t.name = "gas";
-  t.description = "1000 elastic smooth balls in a 20 m box, random velocities 0.5-1.5 m/s, 0.25 s: energy drift";
+  t.description =
+      "1000 elastic smooth balls in a 20 m box, random velocities 0.5-1.5 m/s, 0.25 s: energy "
+      "drift";
   t.kind = MetricKind::Conservation;
   SceneDef& s = t.scene;
   s.name = t.name;

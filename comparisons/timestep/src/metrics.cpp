@@ -245,8 +245,8 @@ std::unique_ptr<Metric> apexHeights(std::size_t ball, double floorY, double radi
                                     double h0, int apexes) {
   return std::make_unique<ApexHeights>(ball, floorY, radius, e, h0, apexes);
 }
-std::unique_ptr<Metric> slideToRoll(std::size_t ball, double v0, double radius, double q,
-                                    double mu, double g) {
+std::unique_ptr<Metric> slideToRoll(std::size_t ball, double v0, double radius, double q, double mu,
+                                    double g) {
   return std::make_unique<SlideToRoll>(ball, v0, radius, q, mu, g);
 }
 std::unique_ptr<Metric> constantAcceleration(std::size_t ball, Vec2 downhill, double a) {
@@ -255,8 +255,8 @@ std::unique_ptr<Metric> constantAcceleration(std::size_t ball, Vec2 downhill, do
 std::unique_ptr<Metric> exactTrajectory(std::size_t ball, ExactState exact, double radius,
                                         double lengthScale, double speedScale,
                                         std::vector<double> jumps) {
-  return std::make_unique<ExactTrajectory>(ball, std::move(exact), radius, lengthScale,
-                                           speedScale, std::move(jumps));
+  return std::make_unique<ExactTrajectory>(ball, std::move(exact), radius, lengthScale, speedScale,
+                                           std::move(jumps));
 }
 std::unique_ptr<Metric> exactFinalState(std::vector<BallState> exact, std::vector<double> radii,
                                         double lengthScale, double speedScale) {

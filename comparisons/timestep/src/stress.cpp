@@ -23,9 +23,10 @@ std::string num(double x) {
   return buf;
 }
 
-
 // Ball 0 started left of ball 1 on the x axis: ending right of it means it went through.
-bool orderFlipped(std::span<const BallState> b) { return b[0].position.x() > b[1].position.x(); }
+bool orderFlipped(std::span<const BallState> b) {
+  return b[0].position.x() > b[1].position.x();
+}
 
 // Any ball outside [lo, hi] went through a wall of the box.
 std::function<bool(std::span<const BallState>)> outsideBox(Vec2 lo, Vec2 hi) {
@@ -44,7 +45,9 @@ std::uint64_t mix(std::uint64_t& s) {
   z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
   return z ^ (z >> 31);
 }
-double uniform(std::uint64_t& s) { return static_cast<double>(mix(s) >> 11) * 0x1.0p-53; }
+double uniform(std::uint64_t& s) {
+  return static_cast<double>(mix(s) >> 11) * 0x1.0p-53;
+}
 
 // Two balls head-on along x (1 m/s each way), meeting after 0.5 s.
 StressCase headOn(const std::string& axis, const std::string& value, double m2, double r2,
@@ -71,7 +74,8 @@ Verdict classify(const StressObservation& o) {
   const double growth = (o.energyMax - o.energyStart) / o.energyScale;
   if (o.finite && !(growth <= kEnergyGrowth)) fail("energy +" + percent(growth));
   if (o.tunnelled) fail("tunnelled");
-  if (o.atRest && !(o.overlapAtRest < kRestOverlap)) fail("overlap " + percent(o.overlapAtRest) + " r");
+  if (o.atRest && !(o.overlapAtRest < kRestOverlap))
+    fail("overlap " + percent(o.overlapAtRest) + " r");
   return v;
 }
 
@@ -158,7 +162,8 @@ StressObservation observeStress(Stepper& s, const StressCase& c, long long every
 std::vector<StressCase> stressCases(bool longGas) {
   std::vector<StressCase> cases;
   // Mass ratio m2/m1 (spinning ball 1, mu = 0.3: the tangential impulse too).
-  for (double q : {1e-6, 1e-3, 1.0, 1e3, 1e6}) cases.push_back(headOn("mass ratio", num(q), q, 0.5, 0.3));
+  for (double q : {1e-6, 1e-3, 1.0, 1e3, 1e6})
+    cases.push_back(headOn("mass ratio", num(q), q, 0.5, 0.3));
   // Radius ratio r2/r1 at equal mass.
   for (double q : {1e-3, 1e-2, 1e-1, 10.0, 1e2, 1e3})
     cases.push_back(headOn("radius ratio", num(q), 1.0, 0.5 * q, 0.3));
@@ -201,8 +206,8 @@ std::vector<StressCase> stressCases(bool longGas) {
     std::uint64_t seed = 3;
     for (int k = 0; k < 200; ++k) {
       const double a = 2 * std::numbers::pi * uniform(seed);
-      g.scene.balls.push_back(
-          ball({0.5 + 0.65 * (k % 14), 0.5 + 0.65 * (k / 14)}, 0.2, 1.0, {2 * std::cos(a), 2 * std::sin(a)}));
+      g.scene.balls.push_back(ball({0.5 + 0.65 * (k % 14), 0.5 + 0.65 * (k / 14)}, 0.2, 1.0,
+                                   {2 * std::cos(a), 2 * std::sin(a)}));
     }
     g.scene.dt = 1e-3;
     g.scene.duration = longGas ? 1000.0 : 10.0;
@@ -218,9 +223,9 @@ std::vector<StressCase> stressCases(bool longGas) {
     p.scene.walls = boxWalls({0, 0}, {2, 8});
     std::uint64_t seed = 9;
     for (int k = 0; k < 200; ++k)
-      p.scene.balls.push_back(ball({0.15 + 0.19 * (k % 10) + 0.01 * (uniform(seed) - 0.5),
-                                    0.15 + 0.21 * (k / 10)},
-                                   0.09, 1.0));
+      p.scene.balls.push_back(
+          ball({0.15 + 0.19 * (k % 10) + 0.01 * (uniform(seed) - 0.5), 0.15 + 0.21 * (k / 10)},
+               0.09, 1.0));
     p.scene.dt = 1e-3;
     p.scene.duration = 4.0;
     p.tunnelled = outsideBox({0, 0}, {2, 8});

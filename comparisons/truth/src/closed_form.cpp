@@ -10,8 +10,8 @@
 // momenta of a heavy body and small ones of a light body).
 #include "particles/truth/closed_form.h"
 
-#include <array>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>

@@ -52,8 +52,8 @@ class Document {
  public:
   explicit Document(std::string title) : title_(std::move(title)) {}
   void heading(const std::string& text, int level = 2);
-  void paragraph(const std::string& text);    // escaped
-  void note(const std::string& text);         // a highlighted paragraph, escaped
+  void paragraph(const std::string& text);  // escaped
+  void note(const std::string& text);       // a highlighted paragraph, escaped
   void rawHtml(const std::string& html) { body_ += html; }
   void table(const Table& table);
   void plot(const Plot& plot);  // inline SVG, or a note when gnuplot is unavailable

@@ -44,8 +44,8 @@ std::unique_ptr<Metric> apexHeights(std::size_t ball, double floorY, double radi
 // where the line through the last two sliding samples' slips reaches zero
 // (the slip falls linearly while sliding), kept between those samples.
 // Error: max(|t_roll - t*| / t*, |vx(end) - vf| / vf); never rolling counts as 1.
-std::unique_ptr<Metric> slideToRoll(std::size_t ball, double v0, double radius, double q,
-                                    double mu, double g);
+std::unique_ptr<Metric> slideToRoll(std::size_t ball, double v0, double radius, double q, double mu,
+                                    double g);
 
 // Displacement of a ball along a unit direction `downhill` from its start:
 // s(t) = a t^2 / 2 (a constant acceleration a, from rest).

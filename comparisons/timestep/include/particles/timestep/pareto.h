@@ -14,8 +14,8 @@ namespace particles::timestep {
 inline constexpr double kErrorFloor = 1e-16;
 
 struct CostPoint {
-  double seconds = 0.0;  // wall time per simulated second (s/s)
-  double error = 0.0;    // dimensionless; +inf for a diverged run
+  double seconds = 0.0;   // wall time per simulated second (s/s)
+  double error = 0.0;     // dimensionless; +inf for a diverged run
   std::size_t index = 0;  // the caller's index of this configuration
 };
 

@@ -32,12 +32,14 @@ inline constexpr double kRestOverlap = 0.01;
 
 struct Verdict {
   bool stable = true;
-  std::string reasons;  // "non-finite", "energy +12 %", "tunnelled", "overlap 3.1 % r"; joined by "; "
+  std::string
+      reasons;  // "non-finite", "energy +12 %", "tunnelled", "overlap 3.1 % r"; joined by "; "
 };
 Verdict classify(const StressObservation& o);
 
 struct StressCase {
-  std::string axis;   // "mass ratio", "radius ratio", "speed", "grazing", "elastic gas", "dense pile", "scale"
+  std::string axis;   // "mass ratio", "radius ratio", "speed", "grazing", "elastic gas", "dense
+                      // pile", "scale"
   std::string value;  // the point on the axis, as text ("1e-06", "2 r/step", ...)
   SceneDef scene;     // dt and duration: the run
   bool endsAtRest = false;
