@@ -56,13 +56,14 @@ inline bool nearWall(const Vec2& x, double grown, const WallDef& wall, WallHit& 
   return touchWall(x, grown, wall, hit);
 }
 
-// A row's masses and targets, from its bodies (r.a, r.b, numbered in cell
-// order), normal and reach, the distance of the centres (or of the centre
-// from the wall), the mixed material and the scene's forced velocities
+// A row's masses and targets, from its bodies (r.a, r.b: their places in
+// `body`; sceneA, sceneB: their scene indices, sceneB unused for a wall), normal and reach, the
+// distance of the centres (or of the centre from the wall), the mixed material and the scene's
+// forced velocities
 // (`forces`: whether they differ between balls; when every ball got the same
 // push, as from gravity alone, no ball pair's relative velocity changed).
 // Returns the row's bounce (ScaleSolver::bounce_).
-inline double fillRow(const ScaleSolver::Motion* body, const ScaleSolver::CellBall* cell,
+inline double fillRow(const ScaleSolver::Motion* body, std::size_t sceneA, std::size_t sceneB,
                       const ScaleBodies& s, bool forces, const ContactMaterial& m, double reach,
                       double dist, ScaleSolver::Row& r) {
   const ScaleSolver::Motion& a = body[r.a];
@@ -82,8 +83,8 @@ inline double fillRow(const ScaleSolver::Motion* body, const ScaleSolver::CellBa
   double forced = 0.0;
   // A wall got no push: a ball's own push is relative to it.
   if (!s.forcedVelocity.empty() && (!b || forces)) {
-    const Vec2 fb = b ? s.forcedVelocity[static_cast<std::size_t>(cell[r.b].index)] : Vec2::Zero();
-    forced = (fb - s.forcedVelocity[static_cast<std::size_t>(cell[r.a].index)]).dot(n);
+    const Vec2 fb = b ? s.forcedVelocity[sceneB] : Vec2::Zero();
+    forced = (fb - s.forcedVelocity[sceneA]).dot(n);
   }
   const double brought = gn - forced;
   double bounce = 0.0;
@@ -266,6 +267,8 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
   // Each thread's counters on cache lines of their own (16 ints = 64 bytes).
   const std::size_t stride = (width + 15) / 16 * 16;
   stripOf_.resize(n);
+  slotOf_.resize(n);
+  slotCount_.assign(static_cast<std::size_t>(threads) * stride, 0);
   lastOf_.resize(n);
   motion_.resize(n);
   invMass_.resize(n);
@@ -302,15 +305,37 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
                       s.material[i].friction == s.material[0].friction;
       mine.forced = mine.forced && (!anyForces || s.forcedVelocity[i] == s.forcedVelocity[0]);
     }
+    int* slots = slotCount_.data() + static_cast<std::size_t>(t) * stride;
     for (std::size_t k = begin; k < end; ++k) {
       const std::size_t i = static_cast<std::size_t>(cells[k].index);
       // Whole grid columns per strip: neighbours are at most one column apart.
       stripOf_[k] = (cellOf_[k] % cols) * strips / cols;
-      // Each ball's velocity and mass properties in one place: a row touches
-      // two of them, in an order the strips decide.
-      body[k] = {s.velocity[i], s.angularVelocity[i], s.invMass[i], s.invInertia[i], s.radius[i]};
+      ++slots[stripOf_[k]];
       invMass_[k] = s.invMass[i];
       lastOf_[k] = warm ? lastNumberOf_[i] : -1;
+    }
+    pool.sync();
+    if (t == 0) {
+      // Strip by strip, thread by thread (thread t has the t-th range of the
+      // cell order): where each thread's balls of a strip go in motion_.
+      int at = 0;
+      for (int st = 0; st < strips; ++st)
+        for (int u = 0; u < threads; ++u) {
+          int& c = slotCount_[static_cast<std::size_t>(u) * stride + static_cast<std::size_t>(st)];
+          const int here = c;
+          c = at;
+          at += here;
+        }
+    }
+    pool.sync();
+    for (std::size_t k = begin; k < end; ++k) {
+      const std::size_t i = static_cast<std::size_t>(cells[k].index);
+      const int slot = slots[stripOf_[k]]++;
+      slotOf_[k] = slot;
+      // Each ball's velocity and mass properties in one place: a row touches
+      // two of them.
+      body[slot] = {s.velocity[i], s.angularVelocity[i], s.invMass[i], s.invInertia[i],
+                    s.radius[i]};
     }
     pool.sync();
     bool mixOnce = true, forces = false;
@@ -396,13 +421,15 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
       const CellBall& ca = cells[a];
       const std::size_t ia = static_cast<std::size_t>(ca.index);
       Row r;
-      r.a = a;
-      r.b = b;
+      r.a = slotOf_[static_cast<std::size_t>(a)];
+      r.b = b >= 0 ? slotOf_[static_cast<std::size_t>(b)] : b;
+      std::size_t sceneB = 0;
       double dist = 0.0, reach = 0.0;
       ContactMaterial m;
       Vec2 normal;
       if (b >= 0) {
         const CellBall& cb = cells[b];
+        sceneB = static_cast<std::size_t>(cb.index);
         const Vec2 d = cb.position - ca.position;
         reach = ca.radius + cb.radius;
         dist = std::sqrt(d.squaredNorm());
@@ -420,7 +447,7 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
       }
       r.nx = normal.x();
       r.ny = normal.y();
-      const double bounce = fillRow(body, cells, s, forces, m, reach, dist, r);
+      const double bounce = fillRow(body, ia, sceneB, s, forces, m, reach, dist, r);
       // Warm start from the last step's row of the same two bodies, if any.
       // The impulses do not depend on which ball is a: swapping a and b
       // turns n and tau (= perp n) around and P on b into P on a.

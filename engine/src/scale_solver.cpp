@@ -348,6 +348,7 @@ std::size_t ScaleSolver::memoryBytes() const {
       sizeof(int) * (stripStart_.capacity() + stripCount_.capacity()) +
       sizeof(int) * (lastStart_.capacity() + lastOther_.capacity() + lastOf_.capacity()) +
       sizeof(int) * stripOf_.capacity() + sizeof(int) * slot_.capacity() +
+      sizeof(int) * (slotOf_.capacity() + slotCount_.capacity()) +
       sizeof(std::size_t) * linkStart_.capacity() +
       sizeof(double) * (lastN_.capacity() + lastT_.capacity()) +
       sizeof(int) * (cellStart_.capacity() + ballCell_.capacity() + cellOf_.capacity() +
@@ -464,10 +465,11 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
       byStrip(t, [&](std::size_t k) { supportRow(m, rows_[k], s.down, s.gravityStep); });
 
     for (std::size_t k = b; k < e; ++k) {
-      if (guard && movesPastTheMargin(m[k].velocity, ball[k].radius, s.dt))
-        moveGuarded(ball[k], m[k], s);
+      Motion& mk = m[slotOf_[k]];
+      if (guard && movesPastTheMargin(mk.velocity, ball[k].radius, s.dt))
+        moveGuarded(ball[k], mk, s);
       else
-        ball[k].position += s.dt * m[k].velocity;
+        ball[k].position += s.dt * mk.velocity;
     }
     pool.sync();
 
@@ -492,10 +494,11 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
     // last pass ended with a sync, and every thread left the loop after it.
     for (std::size_t k = b; k < e; ++k) {
       const std::size_t i = static_cast<std::size_t>(ball[k].index);
+      const Motion& mk = m[slotOf_[k]];
       s.position[i] = ball[k].position;
-      s.velocity[i] = m[k].velocity;
-      s.angularVelocity[i] = m[k].angularVelocity;
-      if (s.spin) s.angle[i] += s.dt * m[k].angularVelocity;
+      s.velocity[i] = mk.velocity;
+      s.angularVelocity[i] = mk.angularVelocity;
+      if (s.spin) s.angle[i] += s.dt * mk.angularVelocity;
     }
   });
 
@@ -513,9 +516,11 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
     for (std::size_t a = b; a < e; ++a) {
       lastStart_[a] = static_cast<int>(k);
       for (; k < stop; ++k) {
+        // The pair's balls in cell order, the row's impulses.
+        const Pair& p = pairs_[static_cast<std::size_t>(slot_[k])];
         const Row& r = rows_[static_cast<std::size_t>(slot_[k])];
-        if (static_cast<std::size_t>(r.a) != a) break;
-        lastOther_[k] = r.b >= 0 ? r.b : static_cast<int>(n) + (-1 - r.b);
+        if (static_cast<std::size_t>(p.a) != a) break;
+        lastOther_[k] = p.b >= 0 ? p.b : static_cast<int>(n) + (-1 - p.b);
         lastN_[k] = r.lambdaN;
         lastT_[k] = r.lambdaT;
       }
@@ -529,10 +534,11 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
     impacts->clear();
     for (std::size_t k = 0; k < slot_.size(); ++k) {
       const Row& r = rows_[static_cast<std::size_t>(slot_[k])];
+      const Pair& p = pairs_[static_cast<std::size_t>(slot_[k])];
       if (r.lambdaN == 0.0) continue;
       const bool wall = r.b < 0;
-      ImpactEvent e{ball[r.a].index,
-                    wall ? -1 - r.b : ball[r.b].index,
+      ImpactEvent e{ball[p.a].index,
+                    wall ? -1 - r.b : ball[p.b].index,
                     wall,
                     r.normal(),
                     r.lambdaN,
