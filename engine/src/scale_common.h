@@ -21,6 +21,27 @@ inline std::pair<std::size_t, std::size_t> part(std::size_t n, int t, int thread
   return {n * tt / tn, n * (tt + 1) / tn};
 }
 
+// Turns counts[u * stride + k], thread u's items in bucket k, into the place
+// of thread u's first item of bucket k: bucket by bucket, thread by thread,
+// so that each bucket keeps the items' order (thread u has the u-th range of
+// them). When `start` is not null, also writes each bucket's first place to
+// start[k] and the total to start[buckets]. The threads' shared counting
+// sorts (cells, strips of balls, strips of rows) all place this way.
+inline void placeByBucket(int* counts, std::size_t stride, std::size_t buckets, int threads,
+                          int* start) {
+  int at = 0;
+  for (std::size_t k = 0; k < buckets; ++k) {
+    if (start) start[k] = at;
+    for (int u = 0; u < threads; ++u) {
+      int& c = counts[static_cast<std::size_t>(u) * stride + k];
+      const int here = c;
+      c = at;
+      at += here;
+    }
+  }
+  if (start) start[buckets] = at;
+}
+
 // Whether the wall's segment lies wholly outside the box [lo, hi] (m): a
 // ball whose reach stays inside the box cannot touch the wall. Most balls of
 // a large scene are far from every wall, and this skips the segment

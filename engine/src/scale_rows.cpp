@@ -57,11 +57,11 @@ inline bool nearWall(const Vec2& x, double grown, const WallDef& wall, WallHit& 
 }
 
 // A row's masses and targets, from its bodies (r.a, r.b: their places in
-// `body`; sceneA, sceneB: their scene indices, sceneB unused for a wall), normal and reach, the
-// distance of the centres (or of the centre from the wall), the mixed material and the scene's
-// forced velocities
-// (`forces`: whether they differ between balls; when every ball got the same
-// push, as from gravity alone, no ball pair's relative velocity changed).
+// `body`; sceneA, sceneB: their scene indices, sceneB unused for a wall),
+// normal and reach, the distance of the centres (or of the centre from the
+// wall), the mixed material and the scene's forced velocities (`forces`:
+// whether they differ between balls; when every ball got the same push, as
+// from gravity alone, no ball pair's relative velocity changed).
 // Returns the row's bounce (ScaleSolver::bounce_).
 inline double fillRow(const ScaleSolver::Motion* body, std::size_t sceneA, std::size_t sceneB,
                       const ScaleBodies& s, bool forces, const ContactMaterial& m, double reach,
@@ -187,21 +187,8 @@ ScaleSolver::Grid ScaleSolver::buildGrid(const ScaleBodies& s, ThreadPool& pool)
       ++count[c];
     }
     pool.sync();
-    if (t == 0) {
-      // Cell by cell, thread by thread: where each thread's balls of a
-      // cell go.
-      int at = 0;
-      for (std::size_t c = 0; c < cells; ++c) {
-        cellStart_[c] = at;
-        for (int u = 0; u < threads; ++u) {
-          int& k = cellCount_[static_cast<std::size_t>(u) * cells + c];
-          const int here = k;
-          k = at;
-          at += here;
-        }
-      }
-      cellStart_[cells] = at;
-    }
+    // Where each thread's balls of a cell go.
+    if (t == 0) scale::placeByBucket(cellCount_.data(), cells, cells, threads, cellStart_.data());
     pool.sync();
     for (std::size_t i = b; i < e; ++i) {
       const int c = ballCell_[i];
@@ -315,18 +302,10 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
       lastOf_[k] = warm ? lastNumberOf_[i] : -1;
     }
     pool.sync();
-    if (t == 0) {
-      // Strip by strip, thread by thread (thread t has the t-th range of the
-      // cell order): where each thread's balls of a strip go in motion_.
-      int at = 0;
-      for (int st = 0; st < strips; ++st)
-        for (int u = 0; u < threads; ++u) {
-          int& c = slotCount_[static_cast<std::size_t>(u) * stride + static_cast<std::size_t>(st)];
-          const int here = c;
-          c = at;
-          at += here;
-        }
-    }
+    // Where each thread's balls of a strip go in motion_.
+    if (t == 0)
+      scale::placeByBucket(slotCount_.data(), stride, static_cast<std::size_t>(strips), threads,
+                           nullptr);
     pool.sync();
     for (std::size_t k = begin; k < end; ++k) {
       const std::size_t i = static_cast<std::size_t>(cells[k].index);
@@ -398,20 +377,10 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
       rows_.resize(linkStart_.back());
       pairs_.resize(linkStart_.back());
       bounce_.resize(linkStart_.back());
-      // Where each thread's rows of each strip start: strip by strip, thread
-      // by thread, so that a strip's rows are in (a, b) order (thread t has
-      // the t-th range of balls).
-      int at = 0;
-      for (int st = 0; st < strips; ++st) {
-        stripStart_[static_cast<std::size_t>(st)] = at;
-        for (int u = 0; u < threads; ++u) {
-          int& c = stripCount_[static_cast<std::size_t>(u) * stride + static_cast<std::size_t>(st)];
-          const int rowsHere = c;
-          c = at;
-          at += rowsHere;
-        }
-      }
-      stripStart_[static_cast<std::size_t>(strips)] = at;
+      // Where each thread's rows of each strip start, so that a strip's rows
+      // are in (a, b) order.
+      scale::placeByBucket(stripCount_.data(), stride, static_cast<std::size_t>(strips), threads,
+                           stripStart_.data());
     }
     pool.sync();
 

@@ -51,9 +51,10 @@ class ScaleSolver {
 
   // One contact row: a ball pair, or a ball and a wall (b < 0). Its balls
   // are their places in motion_, which holds them strip by strip (slotOf_
-  // says why), not as the scene numbers them. 72 bytes, what the velocity iterations read and
-  // write: the reach is in the row's Pair and the bounce in bounce_ (96 bytes with both and an
-  // aligned Vec2; at N = 100,000 the rows are read from memory on every sweep).
+  // says why), not as the scene numbers them. 72 bytes, what the velocity
+  // iterations read and write: the reach is in the row's Pair and the bounce
+  // in bounce_ (96 bytes with both and an aligned Vec2; at N = 100,000 the
+  // rows are read from memory on every sweep).
   struct Row {
     double nx = 1.0, ny = 0.0;  // unit normal, from a to b
     int a = 0;
