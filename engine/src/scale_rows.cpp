@@ -224,7 +224,11 @@ ScaleSolver::Grid ScaleSolver::buildGrid(const ScaleBodies& s, ThreadPool& pool)
 
 void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
   const std::size_t n = s.position.size();
-  const auto [cols, rows, margin] = buildGrid(s, pool);
+  // Plain names, not a structured binding: the lambdas below use them, and
+  // clang before 16 (Debian 12 has 14) cannot capture a structured binding.
+  const Grid grid = buildGrid(s, pool);
+  const int cols = grid.cols, rows = grid.rows;
+  const double margin = grid.margin;
   // The last step's impulses can be matched only if it had the same balls
   // (reset() empties its numbering).
   const bool warm = lastNumberOf_.size() == n;
