@@ -135,5 +135,49 @@ TEST(ScaleWallSide, TheBallStaysInTheBox) {
   }
 }
 
+// A ball the solve leaves on a wall moving into it. U, radius 0.5, touches
+// the left wall (x = 0.5) and rests on L, on the floor, with the line of
+// centres 30 degrees below horizontal; U falls at u. The support sweep runs
+// after the wall rows and pushes U away from L along the line of centres,
+// up and to the left, into the wall. Before the wall guard took a ball that
+// starts on a wall, U left the solve at u = 60 moving at (-4.27, -15.97) m/s,
+// into the wall, and the move carried it 0.07 m through (the overlap passes
+// put it back); at 60 m/s into a wall a ball crosses its line within a step.
+// Now it takes the wall's impact before it moves: with e = 0 it ends the
+// step not moving into any wall it touches, and inside the box. At u = 200 it
+// reaches the floor within the step and is in the corner: the floor's
+// impact and friction, then the wall's, each leave it leaving that wall.
+void expectNoBallEndsMovingIntoAWall(double u) {
+  SceneDef s = test::largePathScene(kDt, 10.0, {0.0, 0.0}, {10.0, 10.0});
+  s.contact = {0.0, 0.5};
+  const double angle = M_PI / 6.0, r = 0.5;
+  BallDef lower, upper;
+  lower.position = {r + 2.0 * r * std::cos(angle), r};
+  upper.position = {r, r + 2.0 * r * std::sin(angle)};
+  lower.radius = upper.radius = r;
+  upper.velocity = {0.0, -u};
+  s.balls = {lower, upper};
+  World w(s);
+  w.step();
+  const BallState b = w.ball(1);
+  constexpr double kTol = 1e-9;  // the overlap removal's tolerance
+  EXPECT_GE(b.position.x(), r - kTol);
+  EXPECT_GE(b.position.y(), r - kTol);
+  // Touching the left wall (it does, within the tolerance): not moving into it.
+  ASSERT_LE(b.position.x(), r + kTol);
+  EXPECT_GE(b.velocity.x(), -1e-12);
+  if (b.position.y() <= r + kTol) {
+    EXPECT_GE(b.velocity.y(), -1e-12);  // and the floor, in the corner
+  }
+}
+
+TEST(ScaleWallSide, TheSupportSweepCannotDriveABallOnAWallIntoIt) {
+  expectNoBallEndsMovingIntoAWall(60.0);
+}
+
+TEST(ScaleWallSide, ABallDrivenIntoACornerLeavesBothWalls) {
+  expectNoBallEndsMovingIntoAWall(200.0);
+}
+
 }  // namespace
 }  // namespace particles
