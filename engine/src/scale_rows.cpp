@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include "particles/broad_phase.h"
 #include "scale_common.h"
@@ -54,6 +55,37 @@ inline bool nearWall(const Vec2& x, double grown, const WallDef& wall, WallHit& 
   const Vec2 reach(grown, grown);
   if (scale::wallOutsideBox(x - reach, x + reach, wall)) return false;
   return touchWall(x, grown, wall, hit);
+}
+
+// The longer search of a fast ball a (reach `ea` beyond touching, > 0): the
+// balls in the cells within `k` of its cell (cx, cy) that it may reach within
+// the step and that the plain search did not pair with it, in cell order.
+// Each pair once: from the ball of the larger reach, or of the lower number
+// when both reach as far. Calls f(b) for each.
+template <class F>
+inline void fastPartners(const ScaleSolver::CellBall* cells, const int* cellStart,
+                         const double* reach, int cols, int rows, int a, int cx, int cy, int k,
+                         double margin, F&& f) {
+  const Vec2 xa = cells[a].position;
+  const double ra = cells[a].radius, ea = reach[a];
+  const int x0 = std::max(0, cx - k), x1 = std::min(cols - 1, cx + k);
+  for (int y = std::max(0, cy - k); y <= std::min(rows - 1, cy + k); ++y) {
+    const std::size_t first = static_cast<std::size_t>(y) * static_cast<std::size_t>(cols);
+    const int from = cellStart[first + static_cast<std::size_t>(x0)];
+    const int to = cellStart[first + static_cast<std::size_t>(x1) + 1];
+    for (int b = from; b < to; ++b) {
+      const double eb = reach[b];
+      if (b == a || eb > ea || (eb == ea && b < a)) continue;
+      const double d2 = (cells[b].position - xa).squaredNorm();
+      const double touch = ra + cells[b].radius;
+      // The plain search's test to the bit (nearBalls: the same sum and
+      // square from either ball): its pairs are not made twice.
+      const double near = touch + margin;
+      const double far = touch + ea;
+      if (d2 <= near * near || d2 > far * far) continue;
+      f(b);
+    }
+  }
 }
 
 // A row's masses and targets, from its bodies (r.a, r.b: their places in
@@ -118,6 +150,7 @@ ScaleSolver::Grid ScaleSolver::buildGrid(const ScaleBodies& s, ThreadPool& pool)
   // Each thread's bounds on a cache line of its own.
   struct alignas(64) Bounds {
     Vec2 lo{0.0, 0.0}, hi{0.0, 0.0};
+    Vec2 vlo{0.0, 0.0}, vhi{0.0, 0.0};  // velocities (m/s)
     double maxRadius = 0.0;
     bool finite = true;
     bool empty = true;
@@ -129,20 +162,26 @@ ScaleSolver::Grid ScaleSolver::buildGrid(const ScaleBodies& s, ThreadPool& pool)
     if (b == e) return;
     mine.empty = false;
     mine.lo = mine.hi = s.position[b];
+    mine.vlo = mine.vhi = s.velocity[b];
     for (std::size_t i = b; i < e; ++i) {
       mine.lo = mine.lo.cwiseMin(s.position[i]);
       mine.hi = mine.hi.cwiseMax(s.position[i]);
+      mine.vlo = mine.vlo.cwiseMin(s.velocity[i]);
+      mine.vhi = mine.vhi.cwiseMax(s.velocity[i]);
       mine.maxRadius = std::max(mine.maxRadius, s.radius[i]);
       mine.finite = mine.finite && s.position[i].allFinite();
     }
   });
   Vec2 lo = s.position[0], hi = s.position[0];
+  Vec2 vlo = s.velocity[0], vhi = s.velocity[0];
   double maxRadius = 0.0;
   bool finite = true;
   for (const Bounds& b : bounds) {
     if (b.empty) continue;
     lo = lo.cwiseMin(b.lo);
     hi = hi.cwiseMax(b.hi);
+    vlo = vlo.cwiseMin(b.vlo);
+    vhi = vhi.cwiseMax(b.vhi);
     maxRadius = std::max(maxRadius, b.maxRadius);
     finite = finite && b.finite;
   }
@@ -219,10 +258,76 @@ ScaleSolver::Grid ScaleSolver::buildGrid(const ScaleBodies& s, ThreadPool& pool)
     for (std::size_t k = b; k < e; ++k)
       numberOf_[static_cast<std::size_t>(cellBalls_[k].index)] = static_cast<int>(k);
   });
-  return {cols, rows, margin};
+  // No two balls close faster than the span of the velocities: when that
+  // stays within the margin a step (a pile at rest), no ball needs the
+  // longer search of fast pairs, and nothing of it runs. A NaN compares false.
+  const double span = (vhi - vlo).squaredNorm() * (s.dt * s.dt);
+  const bool fast = finite && span > margin * margin;
+  return {cols, rows, margin, cell, maxRadius, fast};
 }
 
-void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
+// Rows for fast pairs (docs/scale.md, "Rows for fast pairs"): the reach
+// beyond touching of each ball's longer search. Two balls close on each other
+// no faster than their velocities differ, and a ball's velocity differs from
+// any other within k cells of it by at most its distance from the box of the
+// velocities in those cells: each cell's box, grown along its grid row, then
+// per ball across the grid rows. A ball whose distance, times dt, exceeds
+// the margin searches that far (up to k cells), the others not at all. Run
+// by every thread t of the pool (three barriers).
+void ScaleSolver::findFastReach(const ScaleBodies& s, const Grid& grid, int k, int t,
+                                ThreadPool& pool) {
+  const int cols = grid.cols, rows = grid.rows, threads = pool.size();
+  const std::size_t cells = static_cast<std::size_t>(cols) * static_cast<std::size_t>(rows);
+  constexpr float kInf = std::numeric_limits<float>::infinity();
+  const auto grow = [](VelocityBox& box, const VelocityBox& other) {
+    box.loX = std::min(box.loX, other.loX);
+    box.loY = std::min(box.loY, other.loY);
+    box.hiX = std::max(box.hiX, other.hiX);
+    box.hiY = std::max(box.hiY, other.hiY);
+  };
+  const auto [c0, c1] = part(cells, t, threads);
+  for (std::size_t c = c0; c < c1; ++c) {
+    VelocityBox box{kInf, kInf, -kInf, -kInf};
+    for (int j = cellStart_[c]; j < cellStart_[c + 1]; ++j) {
+      const Vec2& v =
+          s.velocity[static_cast<std::size_t>(cellBalls_[static_cast<std::size_t>(j)].index)];
+      const float vx = static_cast<float>(v.x()), vy = static_cast<float>(v.y());
+      grow(box, {vx, vy, vx, vy});
+    }
+    cellBox_[c] = box;
+  }
+  pool.sync();
+  for (std::size_t c = c0; c < c1; ++c) {
+    const int x = static_cast<int>(c % static_cast<std::size_t>(cols));
+    const std::size_t first = c - static_cast<std::size_t>(x);
+    VelocityBox box{kInf, kInf, -kInf, -kInf};
+    for (int u = std::max(0, x - k); u <= std::min(cols - 1, x + k); ++u)
+      grow(box, cellBox_[first + static_cast<std::size_t>(u)]);
+    rowBox_[c] = box;
+  }
+  pool.sync();
+  const auto [b, e] = part(s.position.size(), t, threads);
+  const double margin = grid.margin;
+  // Partners beyond k cells are not in the box: the reach stops short of them.
+  const double cap = k * grid.cell - grid.maxRadius;
+  for (std::size_t j = b; j < e; ++j) {
+    const int c = cellOf_[j], cx = c % cols, cy = c / cols;
+    VelocityBox box{kInf, kInf, -kInf, -kInf};
+    for (int y = std::max(0, cy - k); y <= std::min(rows - 1, cy + k); ++y)
+      grow(box, rowBox_[static_cast<std::size_t>(y) * static_cast<std::size_t>(cols) +
+                        static_cast<std::size_t>(cx)]);
+    const Vec2& v = s.velocity[static_cast<std::size_t>(cellBalls_[j].index)];
+    const double dx = std::max(v.x() - box.loX, box.hiX - v.x());
+    const double dy = std::max(v.y() - box.loY, box.hiY - v.y());
+    const double step2 = (dx * dx + dy * dy) * (s.dt * s.dt);
+    double reach = 0.0;
+    if (step2 > margin * margin) reach = std::min(std::sqrt(step2), cap - cellBalls_[j].radius);
+    fastReach_[j] = reach > margin ? reach : 0.0;
+  }
+  pool.sync();
+}
+
+void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool, int fastCells) {
   const std::size_t n = s.position.size();
   // Plain names, not a structured binding: the lambdas below use them, and
   // clang before 16 (Debian 12 has 14) cannot capture a structured binding.
@@ -254,6 +359,17 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
   int strips = std::clamp(cols / kStripColumns, 1, kMaxStrips);
   if (strips >= 4) strips = std::min(kMaxStrips, (strips + 1) / 4 * 4);
   const int threads = pool.size();
+  // A row's balls must lie in the same or neighbouring strips: the longer
+  // search of fast balls reaches no further than a strip is wide (at least
+  // cols / strips columns).
+  int fast = grid.fast ? std::max(0, fastCells) : 0;
+  if (strips > 1) fast = std::min(fast, cols / strips);
+  if (fast > 0) {
+    const std::size_t cellCount = static_cast<std::size_t>(cols) * static_cast<std::size_t>(rows);
+    cellBox_.resize(cellCount);
+    rowBox_.resize(cellCount);
+    fastReach_.resize(n);
+  }
   const std::size_t width = static_cast<std::size_t>(strips) + 1;
   // Each thread's counters on cache lines of their own (16 ints = 64 bytes).
   const std::size_t stride = (width + 15) / 16 * 16;
@@ -321,6 +437,7 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
                     s.radius[i]};
     }
     pool.sync();
+    if (fast > 0) findFastReach(s, grid, fast, t, pool);
     bool mixOnce = true, forces = false;
     for (const Same& u : same) {
       mixOnce = mixOnce && u.material;
@@ -370,6 +487,17 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool) {
         links.push_back({a, -1 - static_cast<int>(w)});
         ++count[sa];
       }
+      // A fast ball's speculative rows with the balls beyond the margin it
+      // may reach within the step; a ball numbered before a comes after a's
+      // own partners here, so a thread's links stay in order of their first
+      // ball (the warm start of such a row is kept under a, where the next
+      // step, which looks under the lower number, does not find it).
+      if (fast > 0 && fastReach_[ia] > 0.0)
+        fastPartners(cells, cellStart_.data(), fastReach_.data(), cols, rows, a, cx, cy, fast,
+                     margin, [&](int b) {
+                       links.push_back({a, b});
+                       ++count[std::min(sa, stripOf_[static_cast<std::size_t>(b)])];
+                     });
     }
     pool.sync();
     if (t == 0) {

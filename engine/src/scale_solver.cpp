@@ -391,7 +391,9 @@ std::size_t ScaleSolver::memoryBytes() const {
       sizeof(int) * (cellStart_.capacity() + ballCell_.capacity() + cellOf_.capacity() +
                      cellCount_.capacity()) +
       sizeof(int) * (numberOf_.capacity() + lastNumberOf_.capacity()) +
-      sizeof(CellBall) * cellBalls_.capacity() + sizeof(ThreadLinks) * found_.capacity();
+      sizeof(CellBall) * cellBalls_.capacity() + sizeof(ThreadLinks) * found_.capacity() +
+      sizeof(VelocityBox) * (cellBox_.capacity() + rowBox_.capacity()) +
+      sizeof(double) * fastReach_.capacity();
   for (const ThreadLinks& f : found_) bytes += sizeof(Link) * f.links.capacity();
   return bytes;
 }
@@ -405,7 +407,7 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
   const bool parallel = static_cast<long long>(n) >= settings.scaleParallelFrom;
   ThreadPool& pool = pool_.get(parallel ? std::max(1, settings.threads) : 1);
   const int threads = pool.size();
-  findRows(s, pool);
+  findRows(s, pool, settings.scaleFastPairCells);
 
   const int iterations = std::max(1, settings.scaleVelocityIterations);
   const int passes = std::max(1, settings.scalePositionPasses);

@@ -101,9 +101,19 @@ class ScaleSolver {
     int cols = 1;
     int rows = 1;
     double margin = 0.0;
+    double cell = 0.0;       // m, a cell's side
+    double maxRadius = 0.0;  // m
+    // Whether two balls may close on each other faster than the margin a
+    // step: the scene's velocities span more than margin / dt.
+    bool fast = false;
   };
   Grid buildGrid(const ScaleBodies& bodies, ThreadPool& pool);
-  void findRows(const ScaleBodies& bodies, ThreadPool& pool);
+  // fastCells: SolverSettings::scaleFastPairCells.
+  void findRows(const ScaleBodies& bodies, ThreadPool& pool, int fastCells);
+  // Rows for fast pairs: each ball's reach beyond touching (m) for the
+  // longer search, 0 for a ball that needs none (fastReach_, cell order).
+  void findFastReach(const ScaleBodies& bodies, const Grid& grid, int fastCells, int t,
+                     ThreadPool& pool);
 
   // This step's pairs (ball, ball or wall) in (a, b) order, one list per thread
   // (each thread takes its own range of balls). Each list on its own cache
@@ -157,6 +167,15 @@ class ScaleSolver {
   std::vector<int> cellCount_;
   std::vector<int> cellOf_;          // per ball (cell order): its cell
   std::vector<CellBall> cellBalls_;  // the balls in cell order
+  // Rows for fast pairs: per cell, the box of its balls' velocities (m/s;
+  // floats: 16 bytes a cell, and a bound good to 1e-7 of a speed is far
+  // inside the margin), the same box grown over the cells beside it in its
+  // grid row, and per ball (cell order) its reach for the longer search.
+  struct VelocityBox {
+    float loX, loY, hiX, hiY;
+  };
+  std::vector<VelocityBox> cellBox_, rowBox_;
+  std::vector<double> fastReach_;
   // Per scene index: the ball's number in this step's and the last step's
   // cell order.
   std::vector<int> numberOf_, lastNumberOf_;

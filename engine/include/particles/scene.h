@@ -181,6 +181,18 @@ struct SolverSettings {
   // instead of 0. It does not conserve momentum (the lower ball takes no
   // reaction) and does nothing without gravity.
   bool scaleVelocityShock = true;
+  // How far the large-scene path's pair search reaches for a ball that
+  // moves fast against its neighbourhood (grid cells, 0 = not at all;
+  // docs/scale.md, "Rows for fast pairs"). The search finds pairs within
+  // 0.2 of the largest radius of touching; a ball closing on another faster
+  // than that margin a step got no row and landed inside it (57 % of the
+  // radius at the end of the 100,000 pile, 105 % in the million). A ball whose
+  // velocity differs from some velocity in the cells around it (up to this
+  // many cells away) by more than the margin a step also gets speculative
+  // rows with every ball its relative motion can reach within the step, up
+  // to this many cells away: 2 cells of 1.1 m catch approaches up to about
+  // 70 m/s at 60 steps a second. At most the strips' width (7 columns).
+  int scaleFastPairCells = 2;
   // Shock propagation in the large-scene path's overlap removal
   // (dimensionless, 0..1; docs/scale.md, "Shock propagation"). Under gravity
   // the part of a pair's move along gravity is shared with the lower ball's
