@@ -246,6 +246,12 @@ void addScaleBenchOptions(CLI::App& bench, ScaleBenchOptions& o) {
       ->type_name("P")
       ->check(integerInRange(1, 10000));
   bench
+      .add_option("--fast-pair-cells", o.fastPairCells,
+                  "Grid cells the engine's pair search reaches for a fast ball on the large-scene "
+                  "path, 0 (off) to 7 (default: SolverSettings::scaleFastPairCells, 2)")
+      ->type_name("C")
+      ->check(integerInRange(0, 7));
+  bench
       .add_option("--relaxation", o.relaxation,
                   "Engine over-relaxation of the normal impulses on the large-scene path, 1 "
                   "(off) to 1.99 (default: SolverSettings::scaleOverRelaxation, 1.8)")
@@ -311,6 +317,7 @@ int runScaleBench(const ScaleBenchOptions& o) {
           SceneDef scene = pile::makePile(params);
           scene.solver.scaleVelocityIterations = k;
           if (o.positionPasses > 0) scene.solver.scalePositionPasses = o.positionPasses;
+          if (o.fastPairCells >= 0) scene.solver.scaleFastPairCells = o.fastPairCells;
           if (o.shock >= 0.0) scene.solver.scaleShockPropagation = o.shock;
           if (o.relaxation > 0.0) scene.solver.scaleOverRelaxation = o.relaxation;
           if (o.noVelocityShock) scene.solver.scaleVelocityShock = false;
