@@ -393,7 +393,7 @@ std::size_t ScaleSolver::memoryBytes() const {
       sizeof(int) * (numberOf_.capacity() + lastNumberOf_.capacity()) +
       sizeof(CellBall) * cellBalls_.capacity() + sizeof(ThreadLinks) * found_.capacity() +
       sizeof(VelocityBox) * (cellBox_.capacity() + rowBox_.capacity()) +
-      sizeof(double) * fastReach_.capacity();
+      sizeof(double) * fastReach_.capacity() + sizeof(int) * movedIn_.capacity();
   for (const ThreadLinks& f : found_) bytes += sizeof(Link) * f.links.capacity();
   return bytes;
 }
@@ -487,6 +487,8 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
 
   Motion* m = motion_.data();
   CellBall* ball = cellBalls_.data();
+  movedIn_.resize(n);
+  int* movedIn = movedIn_.data();
   pool.run([&](int t) {
     const auto [b, e] = part(n, t, threads);
     // Warm start: the last step's impulses, applied again.
@@ -504,6 +506,7 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
       byStrip(t, [&](std::size_t k) { supportRow(m, rows_[k], s.down, s.gravityStep); });
 
     for (std::size_t k = b; k < e; ++k) {
+      movedIn[k] = -1;
       Motion& mk = m[slotOf_[k]];
       if (guard && movesPastTheMargin(mk.velocity, ball[k].radius, s.dt))
         moveGuarded(ball[k], mk, s);
@@ -518,9 +521,20 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
       mine = 0;
       byStrip(t, [&](std::size_t k) {
         const Pair& r = pairs_[k];
+        // A row whose balls no pass moved since it last looked finds them
+        // where it left them, apart by at least its overlap tolerance (it
+        // would have moved them otherwise): it would do nothing again. So
+        // from the second pass on only the rows beside a move are looked
+        // at, for the same bits as looking at them all.
+        const int since = pass - 1;
+        if (movedIn[r.a] < since && (r.b < 0 || movedIn[r.b] < since)) return;
         const double overlap = projectRow(ball, invMass_.data(), s, r, shock);
         if (pass == 0) deepest = std::max(deepest, overlap);
-        if (overlap > kOverlapTolerance * r.reach) mine = 1;
+        if (overlap > kOverlapTolerance * r.reach) {
+          mine = 1;
+          movedIn[r.a] = pass;
+          if (r.b >= 0) movedIn[r.b] = pass;
+        }
       });
       bool any = false;
       for (const Seen& m : seen) any = any || m.moved[static_cast<std::size_t>(pass % 2)] != 0;

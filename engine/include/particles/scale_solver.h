@@ -151,6 +151,10 @@ class ScaleSolver {
   // Per ball, 1/kg: what the overlap removal reads of the masses, 8 bytes a
   // ball instead of a Motion's 48 (at N = 100,000 it stays in the cache).
   std::vector<double> invMass_;
+  // Per ball (cell order): the last overlap pass of this step that moved
+  // it, -1 for none. A pass skips the rows whose balls neither the last
+  // pass nor this one has moved so far (ScaleSolver::step).
+  std::vector<int> movedIn_;
   std::vector<int> slot_;               // per row in (a, b) order: its index in rows_
   std::vector<std::size_t> linkStart_;  // slot_ of thread t: [linkStart_[t], linkStart_[t+1])
   std::vector<int> stripCount_;         // per thread and strip: rows, then where they go
