@@ -522,7 +522,7 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
       byStrip(t, [&](std::size_t k) {
         const Pair& r = pairs_[k];
         // A row whose balls no pass moved since it last looked finds them
-        // where it left them, apart by at least its overlap tolerance (it
+        // where it left them, overlapping by no more than its tolerance (it
         // would have moved them otherwise): it would do nothing again. So
         // from the second pass on only the rows beside a move are looked
         // at, for the same bits as looking at them all.
