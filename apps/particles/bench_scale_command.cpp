@@ -252,6 +252,13 @@ void addScaleBenchOptions(CLI::App& bench, ScaleBenchOptions& o) {
       ->type_name("C")
       ->check(integerInRange(0, 7));
   bench
+      .add_option("--band-rows", o.bandRows,
+                  "Height in grid rows of the bands of the engine's Gauss-Seidel order on the "
+                  "large-scene path, 0 (whole strips) to 1000 (default: "
+                  "SolverSettings::scaleBandRows, 2)")
+      ->type_name("B")
+      ->check(integerInRange(0, 1000));
+  bench
       .add_option("--relaxation", o.relaxation,
                   "Engine over-relaxation of the normal impulses on the large-scene path, 1 "
                   "(off) to 1.99 (default: SolverSettings::scaleOverRelaxation, 1.8)")
@@ -318,6 +325,7 @@ int runScaleBench(const ScaleBenchOptions& o) {
           scene.solver.scaleVelocityIterations = k;
           if (o.positionPasses > 0) scene.solver.scalePositionPasses = o.positionPasses;
           if (o.fastPairCells >= 0) scene.solver.scaleFastPairCells = o.fastPairCells;
+          if (o.bandRows >= 0) scene.solver.scaleBandRows = o.bandRows;
           if (o.shock >= 0.0) scene.solver.scaleShockPropagation = o.shock;
           if (o.relaxation > 0.0) scene.solver.scaleOverRelaxation = o.relaxation;
           if (o.noVelocityShock) scene.solver.scaleVelocityShock = false;

@@ -28,6 +28,7 @@ struct ScaleBenchOptions {
   std::vector<int> iterations;
   int positionPasses = 0;   // --position-passes: SolverSettings::scalePositionPasses (0 = default)
   int fastPairCells = -1;   // --fast-pair-cells: SolverSettings::scaleFastPairCells (< 0 = default)
+  int bandRows = -1;        // --band-rows: SolverSettings::scaleBandRows (< 0 = default)
   double shock = -1.0;      // --shock: SolverSettings::scaleShockPropagation (< 0 = default)
   double relaxation = 0.0;  // --relaxation: SolverSettings::scaleOverRelaxation (0 = default)
   bool noVelocityShock = false;  // --no-velocity-shock: SolverSettings::scaleVelocityShock off

@@ -362,7 +362,7 @@ void ScaleSolver::findFastReach(const ScaleBodies& s, const Grid& grid, int k, i
   pool.sync();
 }
 
-void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool, int fastCells) {
+void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool, int fastCells, int bandRows) {
   const std::size_t n = s.position.size();
   // Plain names, not a structured binding: the lambdas below use them, and
   // clang before 16 (Debian 12 has 14) cannot capture a structured binding.
@@ -408,14 +408,27 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool, int fastCells
   const std::size_t width = static_cast<std::size_t>(strips) + 1;
   // Each thread's counters on cache lines of their own (16 ints = 64 bytes).
   const std::size_t stride = (width + 15) / 16 * 16;
+  // The rows are counted by strip and band (docs/scale.md, "Bands"): a row
+  // lies in the band of its ball a, the lower-numbered (lower) one.
+  const int band = std::max(0, bandRows);
+  const int bands = band > 0 ? (rows + band - 1) / band : 1;
+  const std::size_t blocks = static_cast<std::size_t>(strips) * static_cast<std::size_t>(bands);
+  const std::size_t blockStride = (blocks + 1 + 15) / 16 * 16;
+  const auto blockOf = [&](int strip, std::size_t a) {
+    const int j = band > 0 ? cellOf_[a] / cols / band : 0;
+    return static_cast<std::size_t>(strip) * static_cast<std::size_t>(bands) +
+           static_cast<std::size_t>(j);
+  };
+  strips_ = strips;
+  bands_ = bands;
   stripOf_.resize(n);
   slotOf_.resize(n);
   slotCount_.assign(static_cast<std::size_t>(threads) * stride, 0);
   lastOf_.resize(n);
   motion_.resize(n);
   invMass_.resize(n);
-  stripCount_.assign(static_cast<std::size_t>(threads) * stride, 0);
-  stripStart_.assign(width, 0);
+  blockCount_.assign(static_cast<std::size_t>(threads) * blockStride, 0);
+  blockStart_.assign(blocks + 1, 0);
   found_.resize(static_cast<std::size_t>(threads));
   linkStart_.assign(static_cast<std::size_t>(threads) + 1, 0);
   const CellBall* cells = cellBalls_.data();
@@ -485,7 +498,7 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool, int fastCells
     // into strip order afterwards cost a tenth of the step at N = 100,000.
     std::vector<Link>& links = found_[static_cast<std::size_t>(t)].links;
     links.clear();
-    int* count = stripCount_.data() + static_cast<std::size_t>(t) * stride;
+    int* count = blockCount_.data() + static_cast<std::size_t>(t) * blockStride;
     std::vector<int> partners;  // this ball's, in increasing order
     for (std::size_t ia = begin; ia < end; ++ia) {
       const int a = static_cast<int>(ia);
@@ -514,13 +527,13 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool, int fastCells
       partners.resize(static_cast<std::size_t>(near - partners.data()));
       for (const int b : partners) {
         links.push_back({a, b});
-        ++count[std::min(sa, stripOf_[static_cast<std::size_t>(b)])];
+        ++count[blockOf(std::min(sa, stripOf_[static_cast<std::size_t>(b)]), ia)];
       }
       for (std::size_t w = 0; w < s.walls.size(); ++w) {
         WallHit hit;
         if (!nearWall(xa, ra + margin, s.walls[w], hit)) continue;
         links.push_back({a, -1 - static_cast<int>(w)});
-        ++count[sa];
+        ++count[blockOf(sa, ia)];
       }
       // A fast ball's speculative rows with the balls beyond the margin it
       // may reach within the step; a ball numbered before a comes after a's
@@ -531,7 +544,7 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool, int fastCells
         fastPartners(cells, cellStart_.data(), fastReach_.data(), cols, rows, a, cx, cy, fast,
                      margin, [&](int b) {
                        links.push_back({a, b});
-                       ++count[std::min(sa, stripOf_[static_cast<std::size_t>(b)])];
+                       ++count[blockOf(std::min(sa, stripOf_[static_cast<std::size_t>(b)]), ia)];
                      });
     }
     pool.sync();
@@ -544,10 +557,10 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool, int fastCells
       rows_.resize(linkStart_.back());
       pairs_.resize(linkStart_.back());
       bounce_.resize(linkStart_.back());
-      // Where each thread's rows of each strip start, so that a strip's rows
-      // are in (a, b) order.
-      scale::placeByBucket(stripCount_.data(), stride, static_cast<std::size_t>(strips), threads,
-                           stripStart_.data());
+      // Where each thread's rows of each strip and band start, so that a
+      // strip's rows are in (a, b) order (the bands of a strip follow each
+      // other, since a's band grows with a).
+      scale::placeByBucket(blockCount_.data(), blockStride, blocks, threads, blockStart_.data());
     }
     pool.sync();
 
@@ -613,7 +626,7 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool, int fastCells
       const int st = b >= 0 ? std::min(stripOf_[static_cast<std::size_t>(a)],
                                        stripOf_[static_cast<std::size_t>(b)])
                             : stripOf_[static_cast<std::size_t>(a)];
-      const int pos = count[st]++;
+      const int pos = count[blockOf(st, static_cast<std::size_t>(a))]++;
       rows_[static_cast<std::size_t>(pos)] = r;
       pairs_[static_cast<std::size_t>(pos)] = {a, b, reach};
       bounce_[static_cast<std::size_t>(pos)] = bounce;

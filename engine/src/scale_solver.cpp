@@ -382,7 +382,7 @@ std::size_t ScaleSolver::memoryBytes() const {
       sizeof(Row) * rows_.capacity() + sizeof(Pair) * pairs_.capacity() +
       sizeof(double) * (bounce_.capacity() + invMass_.capacity()) +
       sizeof(Motion) * motion_.capacity() +
-      sizeof(int) * (stripStart_.capacity() + stripCount_.capacity()) +
+      sizeof(int) * (blockStart_.capacity() + blockCount_.capacity()) +
       sizeof(int) * (lastStart_.capacity() + lastOther_.capacity() + lastOf_.capacity()) +
       sizeof(int) * stripOf_.capacity() + sizeof(int) * slot_.capacity() +
       sizeof(int) * (slotOf_.capacity() + slotCount_.capacity()) +
@@ -407,7 +407,7 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
   const bool parallel = static_cast<long long>(n) >= settings.scaleParallelFrom;
   ThreadPool& pool = pool_.get(parallel ? std::max(1, settings.threads) : 1);
   const int threads = pool.size();
-  findRows(s, pool, settings.scaleFastPairCells);
+  findRows(s, pool, settings.scaleFastPairCells, settings.scaleBandRows);
 
   const int iterations = std::max(1, settings.scaleVelocityIterations);
   const int passes = std::max(1, settings.scalePositionPasses);
@@ -430,58 +430,96 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
   std::vector<Seen> seen(static_cast<std::size_t>(threads));
   int passesUsed = 0;
 
-  // Runs f on every row: the even strips shared among the threads, then
-  // the odd ones (strips of one parity share no ball).
-  const int strips = static_cast<int>(stripStart_.size()) - 1;
-  // A thread takes its strips of one parity row by row in turn (strip 0's
-  // first row, strip 2's first row, ..., strip 0's second row, ...): the
-  // strips share no ball, so the result is bit for bit that of solving them
-  // one after another, but consecutive rows no longer wait for each other.
-  // Within a strip each row waits for the last one that touched its balls
-  // ((a, b) order puts a ball's rows side by side), so one strip at a time
-  // leaves the core idle on that chain of loads and stores. At most
+  // Runs f on every row, in the order of the Gauss-Seidel sweep: band by
+  // band from the bottom (bands_ of SolverSettings::scaleBandRows grid rows;
+  // docs/scale.md, "Bands"), and within a band the even strips, then the odd
+  // ones; each strip's rows of the band in (a, b) order. A row touches the
+  // balls of its own strip and the next, so two strips of one parity share no
+  // ball and the threads share them. Thread t takes a block of neighbouring
+  // strips (the same block in every band), and only its border strips, whose
+  // rows touch balls of another thread's strips, are ordered against that
+  // thread: before a border strip's rows of phase p (a band and a parity) the
+  // thread waits until its neighbour has done its border rows of every phase
+  // before p, and it announces p + 1 as soon as its own are done. A barrier
+  // after every band and parity instead made two threads 14 % slower at
+  // N = 10,000. The order of the operations on every ball is the same for
+  // any thread count, and so is every bit of the result.
+  const int strips = strips_, bands = bands_;
+  const auto ownerOf = [&](int st) {
+    const int count = (strips - st % 2 + 1) / 2;
+    return st / 2 * threads / count;
+  };
+  // Per strip: its thread, and the threads whose strips its rows touch or
+  // whose rows touch its balls (-1: none).
+  std::array<int, kMaxStrips> owner{}, left{}, right{};
+  for (int st = 0; st < strips; ++st) owner[static_cast<std::size_t>(st)] = ownerOf(st);
+  for (int st = 0; st < strips; ++st) {
+    const auto i = static_cast<std::size_t>(st);
+    left[i] = st > 0 && owner[i - 1] != owner[i] ? owner[i - 1] : -1;
+    right[i] = st + 1 < strips && owner[i + 1] != owner[i] ? owner[i + 1] : -1;
+  }
+  pool.resetProgress();
+  // A thread takes its strips of one phase interleaved, row by row in turn
+  // (strip 0's first row, strip 2's first row, ..., strip 0's second row,
+  // ...): the strips share no ball, so the result is bit for bit that of
+  // solving them one after another, but consecutive rows no longer wait for
+  // each other. Within a strip each row waits for the last one that touched
+  // its balls ((a, b) order puts a ball's rows side by side), so one strip at
+  // a time leaves the core idle on that chain of loads and stores. At most
   // kInterleave strips at a time, though: at N = 100,000 (16 strips of a
   // parity on one thread) stage timers gave the iterations 15-20 % less time
   // taking them 8 by 8 than all 16 at once (fewer streams of rows and balls
   // for the prefetchers), but whole-step A/B pairs were within the host's
   // noise; at N = 10,000 (7 strips) nothing changes. Same bits either way.
-  auto byStrip = [&](int t, auto&& f) {
-    for (int parity = 0; parity < 2; ++parity) {
-      std::array<std::size_t, kMaxStrips> from{}, to{};
-      // Thread t takes a block of neighbouring strips, so that the two
-      // threads share only the balls along one strip border.
-      const int count = (strips - parity + 1) / 2;
-      int mine = 0, index = 0;
-      for (int st = parity; st < strips; st += 2, ++index) {
-        if (index * threads / count != t) continue;
-        const std::size_t i = static_cast<std::size_t>(st);
-        from[static_cast<std::size_t>(mine)] = static_cast<std::size_t>(stripStart_[i]);
-        to[static_cast<std::size_t>(mine)] = static_cast<std::size_t>(stripStart_[i + 1]);
-        if (from[static_cast<std::size_t>(mine)] < to[static_cast<std::size_t>(mine)]) ++mine;
-      }
-      for (int g = 0; g < mine; g += kInterleave) {
-        std::array<std::size_t, kMaxStrips> at{}, end{};
-        int active = 0;
-        for (int u = g; u < std::min(mine, g + kInterleave); ++u, ++active) {
-          at[static_cast<std::size_t>(active)] = from[static_cast<std::size_t>(u)];
-          end[static_cast<std::size_t>(active)] = to[static_cast<std::size_t>(u)];
+  auto byStrip = [&](int t, int& phase, auto&& f) {
+    for (int band = 0; band < bands; ++band) {
+      for (int parity = 0; parity < 2; ++parity, ++phase) {
+        std::array<std::size_t, kMaxStrips> from{}, to{};
+        int inner = 0;
+        for (int st = parity; st < strips; st += 2) {
+          const auto i = static_cast<std::size_t>(st);
+          if (owner[i] != t) continue;
+          const std::size_t block =
+              i * static_cast<std::size_t>(bands) + static_cast<std::size_t>(band);
+          const auto b = static_cast<std::size_t>(blockStart_[block]);
+          const auto e = static_cast<std::size_t>(blockStart_[block + 1]);
+          if (left[i] < 0 && right[i] < 0) {
+            if (b < e) {
+              from[static_cast<std::size_t>(inner)] = b;
+              to[static_cast<std::size_t>(inner)] = e;
+              ++inner;
+            }
+            continue;
+          }
+          // A border strip: first, and on its own.
+          if (left[i] >= 0) pool.waitFor(left[i], phase);
+          if (right[i] >= 0) pool.waitFor(right[i], phase);
+          for (std::size_t k = b; k < e; ++k) f(k);
         }
-        while (active > 0) {
-          for (int j = 0; j < active;) {
-            const std::size_t u = static_cast<std::size_t>(j);
-            f(at[u]++);
-            if (at[u] == end[u]) {
-              // This strip is done: the last active one takes its place.
-              --active;
-              at[u] = at[static_cast<std::size_t>(active)];
-              end[u] = end[static_cast<std::size_t>(active)];
-            } else {
-              ++j;
+        if (threads > 1) pool.announce(t, phase + 1);
+        for (int g = 0; g < inner; g += kInterleave) {
+          std::array<std::size_t, kInterleave> at{}, end{};
+          int active = 0;
+          for (int u = g; u < std::min(inner, g + kInterleave); ++u, ++active) {
+            at[static_cast<std::size_t>(active)] = from[static_cast<std::size_t>(u)];
+            end[static_cast<std::size_t>(active)] = to[static_cast<std::size_t>(u)];
+          }
+          while (active > 0) {
+            for (int j = 0; j < active;) {
+              const std::size_t u = static_cast<std::size_t>(j);
+              f(at[u]++);
+              if (at[u] == end[u]) {
+                // This strip is done: the last active one takes its place.
+                --active;
+                at[u] = at[static_cast<std::size_t>(active)];
+                end[u] = end[static_cast<std::size_t>(active)];
+              } else {
+                ++j;
+              }
             }
           }
         }
       }
-      pool.sync();
     }
   };
 
@@ -491,19 +529,21 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
   int* movedIn = movedIn_.data();
   pool.run([&](int t) {
     const auto [b, e] = part(n, t, threads);
+    int phase = 0;  // byStrip's phases so far: the same count on every thread
     // Warm start: the last step's impulses, applied again.
-    byStrip(t, [&](std::size_t k) {
+    byStrip(t, phase, [&](std::size_t k) {
       Row& r = rows_[k];
       if (r.lambdaN != 0.0 || r.lambdaT != 0.0) applyRow(m, r, r.lambdaN, r.lambdaT);
     });
     for (int it = 0; it + 1 < iterations; ++it)
-      byStrip(t, [&](std::size_t k) { solveRow<false>(m, rows_[k], relax); });
-    byStrip(t, [&](std::size_t k) { solveRow<true>(m, rows_[k], 1.0); });
-    byStrip(t, [&](std::size_t k) {
+      byStrip(t, phase, [&](std::size_t k) { solveRow<false>(m, rows_[k], relax); });
+    byStrip(t, phase, [&](std::size_t k) { solveRow<true>(m, rows_[k], 1.0); });
+    byStrip(t, phase, [&](std::size_t k) {
       if (bounce_[k] > 0.0) restituteRow(m, rows_[k], bounce_[k]);
     });
     if (supportSweep)
-      byStrip(t, [&](std::size_t k) { supportRow(m, rows_[k], s.down, s.gravityStep); });
+      byStrip(t, phase, [&](std::size_t k) { supportRow(m, rows_[k], s.down, s.gravityStep); });
+    pool.sync();  // every velocity is final before any ball moves
 
     for (std::size_t k = b; k < e; ++k) {
       movedIn[k] = -1;
@@ -519,7 +559,7 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
     for (int pass = 0; pass < passes; ++pass) {
       char& mine = seen[static_cast<std::size_t>(t)].moved[static_cast<std::size_t>(pass % 2)];
       mine = 0;
-      byStrip(t, [&](std::size_t k) {
+      byStrip(t, phase, [&](std::size_t k) {
         const Pair& r = pairs_[k];
         // A row whose balls no pass moved since it last looked finds them
         // where it left them, overlapping by no more than its tolerance (it
@@ -536,11 +576,14 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
           if (r.b >= 0) movedIn[r.b] = pass;
         }
       });
+      pool.sync();  // every thread's flags of this pass are written
       bool any = false;
       for (const Seen& m : seen) any = any || m.moved[static_cast<std::size_t>(pass % 2)] != 0;
       if (t == 0 && any) passesUsed = pass + 1;
+      // No barrier before the next pass: it writes the other flags, and the
+      // pass after it cannot start before every thread has read these (it
+      // waits at the barrier above in between).
       if (!any) break;
-      pool.sync();  // nobody rewrites this pass's flags before all have read them
     }
 
     // Back to the scene's numbering. No thread moves a ball any more: the

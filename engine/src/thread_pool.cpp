@@ -50,7 +50,9 @@ void waitWhileEqual(const std::atomic<T>& value, T old, std::chrono::microsecond
 
 }  // namespace
 
-ThreadPool::ThreadPool(int threads) : size_(threads < 1 ? 1 : threads) {
+ThreadPool::ThreadPool(int threads)
+    : size_(threads < 1 ? 1 : threads),
+      progress_(std::make_unique<Progress[]>(static_cast<std::size_t>(size_))) {
   for (int i = 1; i < size_; ++i) workers_.emplace_back([this, i] { work(i); });
 }
 
@@ -91,6 +93,25 @@ void ThreadPool::sync() {
     return;
   }
   waitWhileEqual(phase_, phase, kSyncSpin);
+}
+
+void ThreadPool::resetProgress() {
+  for (int t = 0; t < size_; ++t) progress_[static_cast<std::size_t>(t)].phase.store(0);
+}
+
+void ThreadPool::announce(int t, int phase) {
+  std::atomic<int>& mine = progress_[static_cast<std::size_t>(t)].phase;
+  mine.store(phase, std::memory_order_release);
+  mine.notify_all();
+}
+
+// Polls, as at a barrier, then sleeps until the announced phase changes
+// (phases only grow, so each change is a step towards `phase`).
+void ThreadPool::waitFor(int other, int phase) {
+  const std::atomic<int>& theirs = progress_[static_cast<std::size_t>(other)].phase;
+  for (int seen = theirs.load(std::memory_order_acquire); seen < phase;
+       seen = theirs.load(std::memory_order_acquire))
+    waitWhileEqual(theirs, seen, kSyncSpin);
 }
 
 void ThreadPool::work(int index) {

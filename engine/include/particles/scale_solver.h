@@ -108,8 +108,9 @@ class ScaleSolver {
     bool fast = false;
   };
   Grid buildGrid(const ScaleBodies& bodies, ThreadPool& pool);
-  // fastCells: SolverSettings::scaleFastPairCells.
-  void findRows(const ScaleBodies& bodies, ThreadPool& pool, int fastCells);
+  // fastCells: SolverSettings::scaleFastPairCells; bandRows:
+  // SolverSettings::scaleBandRows.
+  void findRows(const ScaleBodies& bodies, ThreadPool& pool, int fastCells, int bandRows);
   // Rows for fast pairs: each ball's reach beyond touching (m) for the
   // longer search, 0 for a ball that needs none (fastReach_, cell order).
   void findFastReach(const ScaleBodies& bodies, const Grid& grid, int fastCells, int t,
@@ -128,16 +129,19 @@ class ScaleSolver {
     std::vector<Link> links;
   };
   std::vector<ThreadLinks> found_;
-  std::vector<Row> rows_;    // in solve order: by strip, then (a, b)
+  std::vector<Row> rows_;    // by strip, then (a, b): each strip band by band
   std::vector<Pair> pairs_;  // rows_'s balls and reach, in the same order
   // Per row, in the same order: the normal relative velocity after the
   // restitution pass (m/s), for a speculative row whose bodies close their
   // gap within the step: -e times the approach they brought. 0: no
   // restitution pass for this row.
   std::vector<double> bounce_;
-  std::vector<int> stripStart_;  // rows_ of strip k: [stripStart_[k], stripStart_[k+1])
-  std::vector<int> stripOf_;     // per ball (cell order): its vertical strip
-  std::vector<Motion> motion_;   // per ball, during the velocity iterations, strip by strip
+  // The rows of strip k in band j (ball a's grid row / bandRows) are
+  // rows_[blockStart_[k * bands_ + j], blockStart_[k * bands_ + j + 1]).
+  int strips_ = 1, bands_ = 1;
+  std::vector<int> blockStart_;
+  std::vector<int> stripOf_;    // per ball (cell order): its vertical strip
+  std::vector<Motion> motion_;  // per ball, during the velocity iterations, strip by strip
   // Per ball (cell order): its place in motion_. The balls of a strip lie
   // there one after another, each strip's bottom-up in cell order, so that
   // the rows of a strip read one run of balls instead of a piece of every
@@ -157,7 +161,7 @@ class ScaleSolver {
   std::vector<int> movedIn_;
   std::vector<int> slot_;               // per row in (a, b) order: its index in rows_
   std::vector<std::size_t> linkStart_;  // slot_ of thread t: [linkStart_[t], linkStart_[t+1])
-  std::vector<int> stripCount_;         // per thread and strip: rows, then where they go
+  std::vector<int> blockCount_;         // per thread, strip and band: rows, then where they go
   // The last step's accumulated impulses, by the last step's numbering: the
   // rows of ball a are [lastStart_[a], lastStart_[a + 1]), each with its
   // partner (the ball count + w for wall w; warm starts need the same count).

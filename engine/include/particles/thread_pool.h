@@ -24,6 +24,16 @@ class ThreadPool {
   void run(const std::function<void(int)>& job);
   void sync();
 
+  // Ordering between two threads instead of all of them (the large-scene
+  // path's bands, docs/scale.md): thread t announces that it has done all
+  // of its work up to `phase` that another thread may wait for; a thread
+  // waits until thread `other` has announced at least `phase`. Phases count
+  // up within one run(); resetProgress(), called outside run(), sets every
+  // thread's back to 0.
+  void resetProgress();
+  void announce(int t, int phase);
+  void waitFor(int other, int phase);
+
  private:
   void work(int index);
 
@@ -39,6 +49,11 @@ class ThreadPool {
   std::atomic<int> running_{0};           // workers still in the current job
   std::atomic<bool> stop_{false};
   const std::function<void(int)>* job_ = nullptr;
+  // Each thread's announced phase, on a cache line of its own.
+  struct alignas(64) Progress {
+    std::atomic<int> phase{0};
+  };
+  std::unique_ptr<Progress[]> progress_;
   std::vector<std::thread> workers_;
 };
 
