@@ -254,8 +254,9 @@ void addScaleBenchOptions(CLI::App& bench, ScaleBenchOptions& o) {
   bench
       .add_option("--band-rows", o.bandRows,
                   "Height in grid rows of the bands of the engine's Gauss-Seidel order on the "
-                  "large-scene path, 0 (whole strips) to 1000 (default: "
-                  "SolverSettings::scaleBandRows, 2)")
+                  "large-scene path at any N, 0 (whole strips) to 1000 (default: "
+                  "SolverSettings::scaleBandRows, 2, from SolverSettings::scaleBandsFrom, "
+                  "50,000 disks)")
       ->type_name("B")
       ->check(integerInRange(0, 1000));
   bench
@@ -325,7 +326,11 @@ int runScaleBench(const ScaleBenchOptions& o) {
           scene.solver.scaleVelocityIterations = k;
           if (o.positionPasses > 0) scene.solver.scalePositionPasses = o.positionPasses;
           if (o.fastPairCells >= 0) scene.solver.scaleFastPairCells = o.fastPairCells;
-          if (o.bandRows >= 0) scene.solver.scaleBandRows = o.bandRows;
+          if (o.bandRows >= 0) {
+            // Asked for: at any N, not only from SolverSettings::scaleBandsFrom.
+            scene.solver.scaleBandRows = o.bandRows;
+            scene.solver.scaleBandsFrom = 0;
+          }
           if (o.shock >= 0.0) scene.solver.scaleShockPropagation = o.shock;
           if (o.relaxation > 0.0) scene.solver.scaleOverRelaxation = o.relaxation;
           if (o.noVelocityShock) scene.solver.scaleVelocityShock = false;

@@ -407,7 +407,8 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
   const bool parallel = static_cast<long long>(n) >= settings.scaleParallelFrom;
   ThreadPool& pool = pool_.get(parallel ? std::max(1, settings.threads) : 1);
   const int threads = pool.size();
-  findRows(s, pool, settings.scaleFastPairCells, settings.scaleBandRows);
+  const bool banded = static_cast<long long>(n) >= settings.scaleBandsFrom;
+  findRows(s, pool, settings.scaleFastPairCells, banded ? settings.scaleBandRows : 0);
 
   const int iterations = std::max(1, settings.scaleVelocityIterations);
   const int passes = std::max(1, settings.scalePositionPasses);

@@ -22,7 +22,10 @@ std::uint64_t hashAfter(int threads, int steps, bool poly, int bandRows = -1) {
   p.threads = threads;
   SceneDef scene = makePile(p);
   scene.solver.scaleParallelFrom = 0;  // share the step among the threads at this size too
-  if (bandRows >= 0) scene.solver.scaleBandRows = bandRows;
+  if (bandRows >= 0) {
+    scene.solver.scaleBandRows = bandRows;
+    scene.solver.scaleBandsFrom = 0;  // bands at this size too
+  }
   World world(scene);
   EXPECT_TRUE(world.plan().scale);
   world.run(steps);
@@ -51,6 +54,26 @@ TEST(ScaleDeterminism, SameHashForAnyThreadCountWithAnyBandHeight) {
     EXPECT_NE(one, previous) << "band rows " << bandRows;
     previous = one;
   }
+}
+
+// Bands start at SolverSettings::scaleBandsFrom balls: below it the sweep is
+// that of whole strips whatever scaleBandRows says (the 10,000 pile and the
+// golden scenes keep their bits), from it the bands change the sweep.
+TEST(ScaleDeterminism, BandsStartAtTheirBallCount) {
+  const auto hashWith = [](int bandsFrom) {
+    PileParams p;
+    p.count = 2500;
+    SceneDef scene = makePile(p);
+    scene.solver.scaleBandRows = 2;
+    scene.solver.scaleBandsFrom = bandsFrom;
+    World world(scene);
+    world.run(120);
+    return stateHash(world);
+  };
+  const std::uint64_t wholeStrips = hashAfter(1, 120, false, 0);
+  EXPECT_EQ(hashWith(2501), wholeStrips);
+  EXPECT_EQ(hashWith(2500), hashAfter(1, 120, false, 2));
+  EXPECT_NE(hashWith(2500), wholeStrips);
 }
 
 TEST(ScaleDeterminism, CopiedWorldContinuesIdentically) {
