@@ -14,8 +14,9 @@
 namespace particles::pile {
 namespace {
 
-// bandRows < 0: SolverSettings' default.
-std::uint64_t hashAfter(int threads, int steps, bool poly, int bandRows = -1) {
+// bandRows < 0: SolverSettings' default; else bands of that height from
+// bandsFrom balls (by default at this size too).
+std::uint64_t hashAfter(int threads, int steps, bool poly, int bandRows = -1, int bandsFrom = 0) {
   PileParams p;
   p.count = 2500;
   p.polydisperse = poly;
@@ -24,7 +25,7 @@ std::uint64_t hashAfter(int threads, int steps, bool poly, int bandRows = -1) {
   scene.solver.scaleParallelFrom = 0;  // share the step among the threads at this size too
   if (bandRows >= 0) {
     scene.solver.scaleBandRows = bandRows;
-    scene.solver.scaleBandsFrom = 0;  // bands at this size too
+    scene.solver.scaleBandsFrom = bandsFrom;
   }
   World world(scene);
   EXPECT_TRUE(world.plan().scale);
@@ -60,20 +61,12 @@ TEST(ScaleDeterminism, SameHashForAnyThreadCountWithAnyBandHeight) {
 // that of whole strips whatever scaleBandRows says (the 10,000 pile and the
 // golden scenes keep their bits), from it the bands change the sweep.
 TEST(ScaleDeterminism, BandsStartAtTheirBallCount) {
-  const auto hashWith = [](int bandsFrom) {
-    PileParams p;
-    p.count = 2500;
-    SceneDef scene = makePile(p);
-    scene.solver.scaleBandRows = 2;
-    scene.solver.scaleBandsFrom = bandsFrom;
-    World world(scene);
-    world.run(120);
-    return stateHash(world);
-  };
+  // hashAfter's pile has 2,500 balls.
   const std::uint64_t wholeStrips = hashAfter(1, 120, false, 0);
-  EXPECT_EQ(hashWith(2501), wholeStrips);
-  EXPECT_EQ(hashWith(2500), hashAfter(1, 120, false, 2));
-  EXPECT_NE(hashWith(2500), wholeStrips);
+  const std::uint64_t fromItsCount = hashAfter(1, 120, false, 2, 2500);
+  EXPECT_EQ(hashAfter(1, 120, false, 2, 2501), wholeStrips);
+  EXPECT_EQ(fromItsCount, hashAfter(1, 120, false, 2, 0));
+  EXPECT_NE(fromItsCount, wholeStrips);
 }
 
 TEST(ScaleDeterminism, CopiedWorldContinuesIdentically) {
