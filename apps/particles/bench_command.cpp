@@ -17,9 +17,10 @@ namespace particles::cli {
 namespace {
 
 // clang-format off
-constexpr std::array<std::string_view, 12> kScaleOnly{
+constexpr std::array<std::string_view, 15> kScaleOnly{
     "--n", "--threads", "--poly", "--steps", "--no-box2d", "--iterations", "--position-passes",
-    "--relaxation", "--shock", "--seed", "--seeds", "--no-velocity-shock"};
+    "--fast-pair-cells", "--band-rows", "--relaxation", "--shock", "--seed", "--seeds",
+    "--no-velocity-shock", "--no-settle-iteration"};
 // clang-format on
 constexpr std::array<std::string_view, 6> kTimestepOnly{
     "--repeats", "--full", "--scene", "--skip-csv", "--no-skip-study", "--report"};

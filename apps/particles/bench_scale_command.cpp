@@ -274,6 +274,9 @@ void addScaleBenchOptions(CLI::App& bench, ScaleBenchOptions& o) {
   bench.add_flag("--no-velocity-shock", o.noVelocityShock,
                  "Engine without shock propagation in velocities (SolverSettings::"
                  "scaleVelocityShock, on by default)");
+  bench.add_flag("--no-settle-iteration", o.noSettleIteration,
+                 "Engine without the settle iteration once a pile has settled "
+                 "(SolverSettings::scaleSettleIteration, on by default)");
   bench.add_option("--seed", o.seed, "Seed of the grid's jitter and radii (default 20261201)")
       ->type_name("SEED")
       ->check(unsigned64());
@@ -334,6 +337,7 @@ int runScaleBench(const ScaleBenchOptions& o) {
           if (o.shock >= 0.0) scene.solver.scaleShockPropagation = o.shock;
           if (o.relaxation > 0.0) scene.solver.scaleOverRelaxation = o.relaxation;
           if (o.noVelocityShock) scene.solver.scaleVelocityShock = false;
+          if (o.noSettleIteration) scene.solver.scaleSettleIteration = false;
           World world(scene);
           RunFigures f = measure(world, scene, o.steps);
           f.engine = "engine";

@@ -32,6 +32,8 @@ struct ScaleBenchOptions {
   double shock = -1.0;      // --shock: SolverSettings::scaleShockPropagation (< 0 = default)
   double relaxation = 0.0;  // --relaxation: SolverSettings::scaleOverRelaxation (0 = default)
   bool noVelocityShock = false;  // --no-velocity-shock: SolverSettings::scaleVelocityShock off
+  // --no-settle-iteration: SolverSettings::scaleSettleIteration off
+  bool noSettleIteration = false;
 };
 
 // Registers the options above on the `bench` subcommand.

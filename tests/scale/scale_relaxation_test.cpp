@@ -14,10 +14,11 @@
 // sometimes has an arch give way a hundred steps later (docs/scale.md,
 // "Coming to rest is counted over seeds"). So the test counts seeds. With
 // the default over-relaxation 6 of these 8 seeds were at rest (34 of 36 over
-// seeds 20261201-36); with plain Gauss-Seidel (w = 1) none was (7 never at
-// rest, one from step 563). At least 5 of 8 separates the two: for a solver
-// that rests 90 % of its seeds, requiring 5 or more of 8 fails about once in
-// 200 changes.
+// seeds 20261201-36), 8 of 8 since the settle iteration
+// (SolverSettings::scaleSettleIteration); with plain Gauss-Seidel (w = 1)
+// none was (7 never at rest, one from step 563). At least 5 of 8 separates
+// the two: for a solver that rests 90 % of its seeds, requiring 5 or more of
+// 8 fails about once in 200 changes.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -27,6 +28,7 @@
 #include "particles/pile/pile_metrics.h"
 #include "particles/pile/pile_scene.h"
 #include "particles/world.h"
+#include "pile_rest.h"
 
 namespace particles::pile {
 namespace {
@@ -46,13 +48,8 @@ TEST(SettledPile, MostSeedsComeToRestWithTheirDisksApart) {
     ASSERT_GT(scene.solver.scaleOverRelaxation, 1.0);
     World world(scene);
     ASSERT_TRUE(world.plan().scale);
-    std::vector<double> energy;
-    for (long long s = 0; s < kSteps; ++s) {
-      world.step();
-      energy.push_back(kineticEnergy(world.balls(), scene.balls));
-    }
-    const std::optional<long long> rest = restStep(energy, restEnergy(scene.balls));
-    const bool settled = rest && *rest <= kSteps - kAtRestFor;
+    const RestRun run = runForRest(world, scene, kSteps, kAtRestFor);
+    const bool settled = run.atRest;
     atRest += settled ? 1 : 0;
     // Overlap, as a fraction of the smaller radius: a pile at rest keeps its
     // disks apart to 0.1 %; one where an arch is still giving way within the
@@ -62,7 +59,7 @@ TEST(SettledPile, MostSeedsComeToRestWithTheirDisksApart) {
     EXPECT_LT(overlap.max, settled ? 1e-3 : 0.05) << "seed " << p.seed;
     std::printf("seed %llu: %s, kinetic energy at the end %.3g J, max overlap %.3g %%\n",
                 static_cast<unsigned long long>(p.seed), settled ? "at rest" : "not at rest",
-                energy.back(), 100.0 * overlap.max);
+                run.finalEnergy, 100.0 * overlap.max);
   }
   EXPECT_GE(atRest, kAtRestAtLeast) << "of " << kSeeds << " seeds";
 }

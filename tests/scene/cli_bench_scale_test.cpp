@@ -42,6 +42,9 @@ TEST(CliBenchScale, OptionsOfTheOtherBenchmarkAreExitTwo) {
   expectBadInput("bench --shock 0.5", "--shock needs --scale");
   expectBadInput("bench --seeds 3", "--seeds needs --scale");
   expectBadInput("bench --no-velocity-shock", "--no-velocity-shock needs --scale");
+  expectBadInput("bench --no-settle-iteration", "--no-settle-iteration needs --scale");
+  expectBadInput("bench --band-rows 2", "--band-rows needs --scale");
+  expectBadInput("bench --fast-pair-cells 1", "--fast-pair-cells needs --scale");
   expectBadInput("bench --scale --n 10 --full", "--full is an option of the catalogue benchmark");
 }
 

@@ -187,6 +187,9 @@ class ScaleSolver {
   // Per scene index: the ball's number in this step's and the last step's
   // cell order.
   std::vector<int> numberOf_, lastNumberOf_;
+  // Whether the last step left the pile settled (ScaleSolver::step): this
+  // step then takes the settle iteration (SolverSettings::scaleSettleIteration).
+  bool settled_ = false;
   PoolHandle pool_;
 };
 
