@@ -6,12 +6,14 @@
 #include <CLI/CLI.hpp>
 #include <array>
 #include <memory>
+#include <string>
 #include <string_view>
 
 #include "bench_scale_command.h"
 #include "bench_timestep_command.h"
 #include "cli_common.h"
 #include "commands.h"
+#include "particles/step_error.h"
 
 namespace particles::cli {
 namespace {
@@ -63,6 +65,9 @@ void addBenchCommand(CLI::App& app, CommandAction& action) {
           return runScaleBench(o);
         }
         return runTimestepBench(*timestep);
+      } catch (const StepError& e) {  // a state a run reached (docs/scale.md)
+        printError(std::string("bench: ") + e.what());
+        return kExitFailed;
       } catch (const std::exception& e) {
         printError(std::string("internal error: ") + e.what());
         return kExitFailed;

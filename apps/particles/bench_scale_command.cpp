@@ -11,6 +11,7 @@
 #include <fstream>
 #include <iostream>
 #include <optional>
+#include <string>
 
 #include "cli_common.h"
 #include "commands.h"
@@ -299,6 +300,7 @@ int runScaleBench(const ScaleBenchOptions& o) {
   }
   std::vector<RunFigures> rows;
   std::vector<std::optional<RunFigures>> ref;  // the Box2D run of each row's N
+  bool stopped = false;                        // an engine run threw StepError
   const std::vector<int> iterations =
       o.iterations.empty() ? std::vector<int>{SolverSettings{}.scaleVelocityIterations}
                            : o.iterations;
@@ -339,7 +341,18 @@ int runScaleBench(const ScaleBenchOptions& o) {
           if (o.noVelocityShock) scene.solver.scaleVelocityShock = false;
           if (o.noSettleIteration) scene.solver.scaleSettleIteration = false;
           World world(scene);
-          RunFigures f = measure(world, scene, o.steps);
+          RunFigures f;
+          try {
+            f = measure(world, scene, o.steps);
+          } catch (const StepError& e) {
+            // This run blew up (docs/scale.md, "A state that cannot be
+            // stepped"): the others still make the table and the CSV.
+            printError("bench: engine N=" + std::to_string(n) + " T=" + std::to_string(t) +
+                       " K=" + std::to_string(k) + " seed " + std::to_string(params.seed) + ": " +
+                       e.what());
+            stopped = true;
+            continue;
+          }
           f.engine = "engine";
           f.seed = params.seed;
           f.threads = t;
@@ -372,7 +385,7 @@ int runScaleBench(const ScaleBenchOptions& o) {
     printError("bench: a run diverged (non-finite state)");
     return kExitFailed;
   }
-  return kExitOk;
+  return stopped ? kExitFailed : kExitOk;
 }
 
 }  // namespace particles::cli

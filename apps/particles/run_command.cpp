@@ -278,6 +278,9 @@ void addRunCommand(CLI::App& app, CommandAction& action) {
     action = [o] {
       try {
         return run(*o);
+      } catch (const StepError& e) {  // a state the run reached, not the file
+        printError(o->scene + ": " + e.what());
+        return kExitFailed;
       } catch (const std::exception& e) {  // not expected: the scene was validated
         printError(std::string("internal error: ") + e.what());
         return kExitFailed;

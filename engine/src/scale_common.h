@@ -15,6 +15,17 @@ namespace particles::scale {
 // that no result depends on the thread count).
 constexpr int kMaxStrips = 32;
 
+// Contact rows a step may make, per ball of the scene (on average). A pile
+// has about 3.5 (a settled ball touches about 6 others, each pair one row)
+// and a falling one up to about 10 with its fast balls' speculative rows; a
+// ball can touch far more only by overlapping them deeply. A state past
+// this bound is a blow-up, not a scene (StepError): at 100,000 balls with
+// the support sweep off, the pile's balls piled into each other and the
+// rows took all 24 GiB of the machine before the bound (docs/scale.md, "A
+// state that cannot be stepped"). Bounds the rows' memory to about 6 KiB a
+// ball.
+constexpr std::size_t kMaxRowsPerBall = 64;
+
 // Items [begin, end) of part t of T: a split by index only, never by timing.
 inline std::pair<std::size_t, std::size_t> part(std::size_t n, int t, int threads) {
   const std::size_t tt = static_cast<std::size_t>(t), tn = static_cast<std::size_t>(threads);

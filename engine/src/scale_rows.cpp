@@ -6,8 +6,10 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "particles/broad_phase.h"
+#include "particles/step_error.h"
 #include "scale_common.h"
 
 namespace particles {
@@ -500,7 +502,10 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool, int fastCells
     links.clear();
     int* count = blockCount_.data() + static_cast<std::size_t>(t) * blockStride;
     std::vector<int> partners;  // this ball's, in increasing order
-    for (std::size_t ia = begin; ia < end; ++ia) {
+    // A thread that alone found more rows than all threads may have stops:
+    // the step fails whatever the thread count (below).
+    const std::size_t budget = scale::kMaxRowsPerBall * n;
+    for (std::size_t ia = begin; ia < end && links.size() <= budget; ++ia) {
       const int a = static_cast<int>(ia);
       const Vec2 xa = cells[ia].position;
       const double ra = cells[ia].radius;
@@ -548,6 +553,9 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool, int fastCells
                      });
     }
     pool.sync();
+    std::size_t found = 0;
+    for (const ThreadLinks& f : found_) found += f.links.size();
+    if (found > budget) return;  // every thread returns here: findRows throws
     if (t == 0) {
       for (int u = 0; u < threads; ++u)
         linkStart_[static_cast<std::size_t>(u) + 1] =
@@ -633,6 +641,18 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool, int fastCells
       slot[k] = pos;
     }
   });
+  std::size_t found = 0;
+  for (const ThreadLinks& f : found_) found += f.links.size();
+  if (found > scale::kMaxRowsPerBall * n) {
+    // Before the rows are made, so memory stays bounded: links are 8 bytes,
+    // the rows and their pairs 96 more each.
+    for (ThreadLinks& f : found_) std::vector<Link>().swap(f.links);
+    throw StepError("large-scene step: more than " + std::to_string(scale::kMaxRowsPerBall) +
+                    " contact rows a ball (" + std::to_string(found) + " or more for " +
+                    std::to_string(n) +
+                    " balls): the balls overlap far beyond touching, as after a blow-up; "
+                    "stopped before running out of memory");
+  }
 }
 
 }  // namespace particles

@@ -9,6 +9,7 @@
 #include "particles/broad_phase.h"
 #include "particles/scale_solver.h"
 #include "particles/scene.h"
+#include "particles/step_error.h"
 #include "particles/swept_ball.h"
 
 namespace particles {
@@ -68,6 +69,8 @@ class World {
   void reset(const SceneDef& scene);
 
   // Advances the world by one step of SceneDef::dt.
+  // Throws StepError when the state can no longer be stepped in bounded
+  // memory (a blow-up; step_error.h).
   void step();
   // Advances by n steps.
   void run(long long steps);

@@ -1,0 +1,57 @@
+// A state the large-scene path cannot step in bounded memory (step_error.h):
+// balls heaped into each other far beyond touching, as after a blow-up. The
+// step stops with StepError before it makes the rows, instead of taking the
+// machine's memory (docs/scale.md, "A state that cannot be stepped"), and
+// it stops for any thread count, as every result of the path does not
+// depend on it.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "large_path_scene.h"
+#include "particles/world.h"
+
+namespace particles {
+namespace {
+
+// `count` balls of radius 0.5 m whose centres lie within a square of side
+// 1 cm: every pair overlaps by 0.99 m or more, count^2 / 2 rows.
+SceneDef heap(int count, int threads) {
+  SceneDef s = test::largePathScene(1.0 / 60.0, 10.0, {-20.0, -20.0}, {20.0, 20.0});
+  s.solver.threads = threads;
+  s.solver.scaleParallelFrom = 0;  // the threads share the step at this size too
+  for (int k = 0; k < count; ++k) {
+    BallDef b;
+    b.position = {0.01 * (k % 37) / 37.0, 0.01 * (k % 41) / 41.0};
+    b.radius = 0.5;
+    b.mass = 1.0;
+    s.balls.push_back(b);
+  }
+  return s;
+}
+
+TEST(ScaleStepError, BallsHeapedIntoEachOtherStopTheStepForAnyThreadCount) {
+  // 3,000 balls: 4.5 million pairs, 70 times the bound of 64 rows a ball.
+  for (int threads : {1, 2, 3}) {
+    World world(heap(3000, threads));
+    try {
+      world.step();
+      FAIL() << threads << " threads: the step made its rows";
+    } catch (const StepError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("more than 64 contact rows a ball"), std::string::npos) << what;
+      EXPECT_NE(what.find("for 3000 balls"), std::string::npos) << what;
+    }
+  }
+}
+
+TEST(ScaleStepError, AHeapWithinTheBoundIsStepped) {
+  // 100 balls heaped the same way: 4,950 rows, under 64 a ball (6,400).
+  // Nothing throws, and the overlap passes push the heap apart.
+  World world(heap(100, 2));
+  world.step();
+  EXPECT_EQ(world.stats().contacts, 100 * 99 / 2);
+}
+
+}  // namespace
+}  // namespace particles
