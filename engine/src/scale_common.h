@@ -19,8 +19,9 @@ constexpr int kMaxStrips = 32;
 // benchmark piles make at most 2.34 (10,000 disks, mono- and polydisperse,
 // any of 600 steps, falling or settled: a touching pair is one row and a
 // settled disk touches about 4.7 others); a ball can be within reach of far
-// more only by overlapping them deeply. A state past this bound is a
-// blow-up, not a scene (StepError): at 100,000 balls with the support sweep
+// more only by overlapping them deeply, or when the radii are so unequal
+// that the margin (0.2 of the largest radius) spans many small balls. A
+// state past this bound is not stepped (StepError): at 100,000 balls with the support sweep
 // off, the pile's balls piled into each other and the rows took all 24 GiB
 // of the machine before the bound (docs/scale.md, "A state that cannot be
 // stepped"). Bounds the rows' memory to about 6 KiB a ball.

@@ -650,8 +650,10 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool, int fastCells
     throw StepError("large-scene step: more than " + std::to_string(scale::kMaxRowsPerBall) +
                     " contact rows a ball (" + std::to_string(found) + " or more for " +
                     std::to_string(n) +
-                    " balls): the balls overlap far beyond touching, as after a blow-up; "
-                    "stopped before running out of memory");
+                    " balls): far more balls lie within reach of each other than in any "
+                    "pile (heaped into each other, as after a blow-up, or radii too unequal "
+                    "for the contact margin of 0.2 of the largest radius); stopped before "
+                    "running out of memory");
   }
 }
 

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include "large_path_scene.h"
 #include "particles/world.h"
@@ -43,6 +44,23 @@ TEST(ScaleStepError, BallsHeapedIntoEachOtherStopTheStepForAnyThreadCount) {
       EXPECT_NE(what.find("for 3000 balls"), std::string::npos) << what;
     }
   }
+}
+
+TEST(ScaleStepError, TheWorldIsLeftAsTheFailedStepFoundItWithItsForcesApplied) {
+  const SceneDef scene = heap(3000, 2);
+  World world(scene);
+  EXPECT_THROW(world.step(), StepError);
+  // Nothing moved and no step was counted; gravity's push of this step
+  // (g dt straight down, from rest) is in the velocities, as step_error.h
+  // says.
+  EXPECT_EQ(world.stepIndex(), 0);
+  const std::vector<BallState> balls = world.balls();
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    EXPECT_EQ(balls[i].position, scene.balls[i].position) << i;
+    EXPECT_EQ(balls[i].velocity, Vec2(scene.dt * scene.gravity)) << i;
+  }
+  // Stepping on meets the same state and stops again.
+  EXPECT_THROW(world.step(), StepError);
 }
 
 TEST(ScaleStepError, AHeapWithinTheBoundIsStepped) {
