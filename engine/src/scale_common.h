@@ -15,16 +15,17 @@ namespace particles::scale {
 // that no result depends on the thread count).
 constexpr int kMaxStrips = 32;
 
-// Contact rows a step may make, per ball of the scene (on average). The
-// benchmark piles make at most 2.34 (10,000 disks, mono- and polydisperse,
-// any of 600 steps, falling or settled: a touching pair is one row and a
-// settled disk touches about 4.7 others); a ball can be within reach of far
-// more only by overlapping them deeply, or when the radii are so unequal
-// that the margin (0.2 of the largest radius) spans many small balls. A
-// state past this bound is not stepped (StepError): at 100,000 balls with the support sweep
-// off, the pile's balls piled into each other and the rows took all 24 GiB
-// of the machine before the bound (docs/scale.md, "A state that cannot be
-// stepped"). Bounds the rows' memory to about 6 KiB a ball.
+// Contact rows a step may make, per ball of the scene (on average), when
+// all radii are equal; findRows scales it by (largest / smallest radius)^2.
+// The benchmark piles make at most 2.34 (10,000 disks, mono- and
+// polydisperse, any of 600 steps: a touching pair is one row and a settled
+// disk touches about 4.7 others), and equal disks that do not overlap can
+// have at most 10.24 within reach; a ball can be within reach of far more
+// only by overlapping them deeply. A state past the bound is not stepped
+// (StepError): at 100,000 balls with the support sweep off, the pile's balls
+// piled into each other and the rows took all 24 GiB of the machine before
+// the bound (docs/scale.md, "A state that cannot be stepped"). Bounds the
+// rows' memory to about 6 KiB a ball (equal radii).
 constexpr std::size_t kMaxRowsPerBall = 64;
 
 // Items [begin, end) of part t of T: a split by index only, never by timing.

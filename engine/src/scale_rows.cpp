@@ -189,6 +189,7 @@ ScaleSolver::Grid ScaleSolver::buildGrid(const ScaleBodies& s, ThreadPool& pool)
     Vec2 lo{0.0, 0.0}, hi{0.0, 0.0};
     Vec2 vlo{0.0, 0.0}, vhi{0.0, 0.0};  // velocities (m/s)
     double maxRadius = 0.0;
+    double minRadius = INFINITY;
     bool finite = true;
     bool empty = true;
   };
@@ -206,12 +207,13 @@ ScaleSolver::Grid ScaleSolver::buildGrid(const ScaleBodies& s, ThreadPool& pool)
       mine.vlo = mine.vlo.cwiseMin(s.velocity[i]);
       mine.vhi = mine.vhi.cwiseMax(s.velocity[i]);
       mine.maxRadius = std::max(mine.maxRadius, s.radius[i]);
+      mine.minRadius = std::min(mine.minRadius, s.radius[i]);
       mine.finite = mine.finite && s.position[i].allFinite();
     }
   });
   Vec2 lo = s.position[0], hi = s.position[0];
   Vec2 vlo = s.velocity[0], vhi = s.velocity[0];
-  double maxRadius = 0.0;
+  double maxRadius = 0.0, minRadius = INFINITY;
   bool finite = true;
   for (const Bounds& b : bounds) {
     if (b.empty) continue;
@@ -220,6 +222,7 @@ ScaleSolver::Grid ScaleSolver::buildGrid(const ScaleBodies& s, ThreadPool& pool)
     vlo = vlo.cwiseMin(b.vlo);
     vhi = vhi.cwiseMax(b.vhi);
     maxRadius = std::max(maxRadius, b.maxRadius);
+    minRadius = std::min(minRadius, b.minRadius);
     finite = finite && b.finite;
   }
   const double margin = kMarginFraction * maxRadius;
@@ -300,7 +303,7 @@ ScaleSolver::Grid ScaleSolver::buildGrid(const ScaleBodies& s, ThreadPool& pool)
   // longer search of fast pairs, and nothing of it runs. A NaN compares false.
   const double span = (vhi - vlo).squaredNorm() * (s.dt * s.dt);
   const bool fast = finite && span > margin * margin;
-  return {cols, rows, margin, cell, maxRadius, fast};
+  return {cols, rows, margin, cell, maxRadius, minRadius, fast};
 }
 
 // Rows for fast pairs (docs/scale.md, "Rows for fast pairs"): the reach
@@ -371,6 +374,19 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool, int fastCells
   const Grid grid = buildGrid(s, pool);
   const int cols = grid.cols, rows = grid.rows;
   const double margin = grid.margin;
+  // The most rows this step may make (scale::kMaxRowsPerBall a ball for
+  // equal radii). Disks that do not overlap, of radius at least rmin, whose
+  // centres lie within reach of a ball (ra + rb + margin <= 2.2 rmax) are
+  // at most (2.2 rmax / rmin + 1)^2 <= 10.24 (rmax / rmin)^2: the bound
+  // grows with the square of the radius spread, so that a boulder in fine
+  // sand, whose margin spans many grains, is stepped as before.
+  const double spread =
+      grid.minRadius > 0.0 && std::isfinite(grid.maxRadius) ? grid.maxRadius / grid.minRadius : 1.0;
+  const double rowsPerBall =
+      static_cast<double>(scale::kMaxRowsPerBall) * std::max(1.0, spread * spread);
+  const double rowLimit = rowsPerBall * static_cast<double>(n);
+  const std::size_t rowBudget = rowLimit < 1e18 ? static_cast<std::size_t>(rowLimit)
+                                                : std::numeric_limits<std::size_t>::max() / 2;
   // The last step's impulses can be matched only if it had the same balls
   // (reset() empties its numbering).
   const bool warm = lastNumberOf_.size() == n;
@@ -504,7 +520,7 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool, int fastCells
     std::vector<int> partners;  // this ball's, in increasing order
     // A thread that alone found more rows than all threads may have stops:
     // the step fails whatever the thread count (below).
-    const std::size_t budget = scale::kMaxRowsPerBall * n;
+    const std::size_t budget = rowBudget;
     for (std::size_t ia = begin; ia < end && links.size() <= budget; ++ia) {
       const int a = static_cast<int>(ia);
       const Vec2 xa = cells[ia].position;
@@ -643,17 +659,15 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool, int fastCells
   });
   std::size_t found = 0;
   for (const ThreadLinks& f : found_) found += f.links.size();
-  if (found > scale::kMaxRowsPerBall * n) {
+  if (found > rowBudget) {
     // Before the rows are made, so memory stays bounded: links are 8 bytes,
     // the rows and their pairs 96 more each.
     for (ThreadLinks& f : found_) std::vector<Link>().swap(f.links);
-    throw StepError("large-scene step: more than " + std::to_string(scale::kMaxRowsPerBall) +
+    throw StepError("large-scene step: more than " + std::to_string(std::llround(rowsPerBall)) +
                     " contact rows a ball (" + std::to_string(found) + " or more for " +
                     std::to_string(n) +
-                    " balls): far more balls lie within reach of each other than in any "
-                    "pile (heaped into each other, as after a blow-up, or radii too unequal "
-                    "for the contact margin of 0.2 of the largest radius); stopped before "
-                    "running out of memory");
+                    " balls): the balls are heaped into each other far beyond touching, as "
+                    "after a blow-up; stopped before running out of memory");
   }
 }
 

@@ -71,5 +71,33 @@ TEST(ScaleStepError, AHeapWithinTheBoundIsStepped) {
   EXPECT_EQ(world.stats().contacts, 100 * 99 / 2);
 }
 
+TEST(ScaleStepError, ABoulderInFineSandIsStepped) {
+  // A valid scene whose radii differ 100-fold: 1,521 grains of 1 cm, 1 mm
+  // apart, and a boulder of 1 m beside them. The margin (0.2 of the largest
+  // radius, 0.2 m) puts up to about 350 grains within reach of a grain (136
+  // rows a ball were measured, the grains at the edges having fewer): over
+  // the bound for equal radii (64), which stopped this valid scene, but not
+  // over the bound for this spread (64 x 100^2).
+  SceneDef s = test::largePathScene(1.0 / 60.0, 10.0, {-5.0, -5.0}, {5.0, 5.0});
+  constexpr int kSide = 39;
+  for (int i = 0; i < kSide * kSide; ++i) {
+    BallDef b;
+    b.position = {-2.0 + 0.021 * (i % kSide), -4.0 + 0.021 * (i / kSide)};
+    b.radius = 0.01;
+    b.mass = 1e-3;
+    s.balls.push_back(b);
+  }
+  BallDef boulder;
+  boulder.position = {3.0, -3.0};
+  boulder.radius = 1.0;
+  boulder.mass = 10.0;
+  s.balls.push_back(boulder);
+  World world(s);
+  EXPECT_NO_THROW(world.step());
+  const double rowsPerBall = static_cast<double>(world.stats().contacts) / 1522.0;
+  EXPECT_GT(rowsPerBall, 64.0);  // the case the spread is for
+  EXPECT_LT(rowsPerBall, 400.0);
+}
+
 }  // namespace
 }  // namespace particles

@@ -103,6 +103,7 @@ class ScaleSolver {
     double margin = 0.0;
     double cell = 0.0;       // m, a cell's side
     double maxRadius = 0.0;  // m
+    double minRadius = 0.0;  // m
     // Whether two balls may close on each other faster than the margin a
     // step: the scene's velocities span more than margin / dt.
     bool fast = false;
