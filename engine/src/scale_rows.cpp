@@ -387,6 +387,12 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool, int fastCells
   const double rowLimit = rowsPerBall * static_cast<double>(n);
   const std::size_t rowBudget = rowLimit < 1e18 ? static_cast<std::size_t>(rowLimit)
                                                 : std::numeric_limits<std::size_t>::max() / 2;
+  // The pairs every thread has found so far (8 bytes each).
+  const auto linksFound = [&] {
+    std::size_t found = 0;
+    for (const ThreadLinks& f : found_) found += f.links.size();
+    return found;
+  };
   // The last step's impulses can be matched only if it had the same balls
   // (reset() empties its numbering).
   const bool warm = lastNumberOf_.size() == n;
@@ -520,8 +526,7 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool, int fastCells
     std::vector<int> partners;  // this ball's, in increasing order
     // A thread that alone found more rows than all threads may have stops:
     // the step fails whatever the thread count (below).
-    const std::size_t budget = rowBudget;
-    for (std::size_t ia = begin; ia < end && links.size() <= budget; ++ia) {
+    for (std::size_t ia = begin; ia < end && links.size() <= rowBudget; ++ia) {
       const int a = static_cast<int>(ia);
       const Vec2 xa = cells[ia].position;
       const double ra = cells[ia].radius;
@@ -569,9 +574,7 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool, int fastCells
                      });
     }
     pool.sync();
-    std::size_t found = 0;
-    for (const ThreadLinks& f : found_) found += f.links.size();
-    if (found > budget) return;  // every thread returns here: findRows throws
+    if (linksFound() > rowBudget) return;  // every thread returns here: findRows throws
     if (t == 0) {
       for (int u = 0; u < threads; ++u)
         linkStart_[static_cast<std::size_t>(u) + 1] =
@@ -657,9 +660,7 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool, int fastCells
       slot[k] = pos;
     }
   });
-  std::size_t found = 0;
-  for (const ThreadLinks& f : found_) found += f.links.size();
-  if (found > rowBudget) {
+  if (const std::size_t found = linksFound(); found > rowBudget) {
     // Before the rows are made, so memory stays bounded: links are 8 bytes,
     // the rows and their pairs 96 more each.
     for (ThreadLinks& f : found_) std::vector<Link>().swap(f.links);
