@@ -278,6 +278,9 @@ void addScaleBenchOptions(CLI::App& bench, ScaleBenchOptions& o) {
   bench.add_flag("--no-settle-iteration", o.noSettleIteration,
                  "Engine without the settle iteration once a pile has settled "
                  "(SolverSettings::scaleSettleIteration, on by default)");
+  bench.add_flag("--no-wavefront", o.noWavefront,
+                 "Engine with its velocity passes one after another instead of as a wavefront "
+                 "over the bands (SolverSettings::scaleWavefront; the same bits)");
   bench.add_option("--seed", o.seed, "Seed of the grid's jitter and radii (default 20261201)")
       ->type_name("SEED")
       ->check(unsigned64());
@@ -340,6 +343,7 @@ int runScaleBench(const ScaleBenchOptions& o) {
           if (o.relaxation > 0.0) scene.solver.scaleOverRelaxation = o.relaxation;
           if (o.noVelocityShock) scene.solver.scaleVelocityShock = false;
           if (o.noSettleIteration) scene.solver.scaleSettleIteration = false;
+          if (o.noWavefront) scene.solver.scaleWavefront = false;
           World world(scene);
           RunFigures f;
           try {

@@ -34,6 +34,8 @@ struct ScaleBenchOptions {
   bool noVelocityShock = false;  // --no-velocity-shock: SolverSettings::scaleVelocityShock off
   // --no-settle-iteration: SolverSettings::scaleSettleIteration off
   bool noSettleIteration = false;
+  // --no-wavefront: SolverSettings::scaleWavefront off (same bits, whole passes)
+  bool noWavefront = false;
 };
 
 // Registers the options above on the `bench` subcommand.

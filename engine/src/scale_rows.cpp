@@ -445,6 +445,9 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool, int fastCells
   };
   strips_ = strips;
   bands_ = bands;
+  // A plain row's ball b lies in a's grid row or the one above; a fast
+  // pair's up to `fast` grid rows above or below (fastPartners).
+  bandReach_ = band > 0 ? (std::max(1, fast) + band - 1) / band + (fast + band - 1) / band : 1;
   stripOf_.resize(n);
   slotOf_.resize(n);
   slotCount_.assign(static_cast<std::size_t>(threads) * stride, 0);

@@ -477,57 +477,70 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
   // taking them 8 by 8 than all 16 at once (fewer streams of rows and balls
   // for the prefetchers), but whole-step A/B pairs were within the host's
   // noise; at N = 10,000 (7 strips) nothing changes. Same bits either way.
-  auto byStrip = [&](int t, int& phase, auto&& f) {
-    for (int band = 0; band < bands; ++band) {
-      for (int parity = 0; parity < 2; ++parity, ++phase) {
-        std::array<std::size_t, kMaxStrips> from{}, to{};
-        int inner = 0;
-        for (int st = parity; st < strips; st += 2) {
-          const auto i = static_cast<std::size_t>(st);
-          if (owner[i] != t) continue;
-          const std::size_t block =
-              i * static_cast<std::size_t>(bands) + static_cast<std::size_t>(band);
-          const auto b = static_cast<std::size_t>(blockStart_[block]);
-          const auto e = static_cast<std::size_t>(blockStart_[block + 1]);
-          if (left[i] < 0 && right[i] < 0) {
-            if (b < e) {
-              from[static_cast<std::size_t>(inner)] = b;
-              to[static_cast<std::size_t>(inner)] = e;
-              ++inner;
-            }
-            continue;
-          }
-          // A border strip: first, and on its own.
-          if (left[i] >= 0) pool.waitFor(left[i], phase);
-          if (right[i] >= 0) pool.waitFor(right[i], phase);
-          for (std::size_t k = b; k < e; ++k) f(k);
+  // One phase: the rows of one band and parity.
+  auto onePhase = [&](int t, int phase, int band, int parity, auto&& f) {
+    std::array<std::size_t, kMaxStrips> from{}, to{};
+    int inner = 0;
+    for (int st = parity; st < strips; st += 2) {
+      const auto i = static_cast<std::size_t>(st);
+      if (owner[i] != t) continue;
+      const std::size_t block =
+          i * static_cast<std::size_t>(bands) + static_cast<std::size_t>(band);
+      const auto b = static_cast<std::size_t>(blockStart_[block]);
+      const auto e = static_cast<std::size_t>(blockStart_[block + 1]);
+      if (left[i] < 0 && right[i] < 0) {
+        if (b < e) {
+          from[static_cast<std::size_t>(inner)] = b;
+          to[static_cast<std::size_t>(inner)] = e;
+          ++inner;
         }
-        if (threads > 1) pool.announce(t, phase + 1);
-        for (int g = 0; g < inner; g += kInterleave) {
-          std::array<std::size_t, kInterleave> at{}, end{};
-          int active = 0;
-          for (int u = g; u < std::min(inner, g + kInterleave); ++u, ++active) {
-            at[static_cast<std::size_t>(active)] = from[static_cast<std::size_t>(u)];
-            end[static_cast<std::size_t>(active)] = to[static_cast<std::size_t>(u)];
-          }
-          while (active > 0) {
-            for (int j = 0; j < active;) {
-              const std::size_t u = static_cast<std::size_t>(j);
-              f(at[u]++);
-              if (at[u] == end[u]) {
-                // This strip is done: the last active one takes its place.
-                --active;
-                at[u] = at[static_cast<std::size_t>(active)];
-                end[u] = end[static_cast<std::size_t>(active)];
-              } else {
-                ++j;
-              }
-            }
+        continue;
+      }
+      // A border strip: first, and on its own.
+      if (left[i] >= 0) pool.waitFor(left[i], phase);
+      if (right[i] >= 0) pool.waitFor(right[i], phase);
+      for (std::size_t k = b; k < e; ++k) f(k);
+    }
+    if (threads > 1) pool.announce(t, phase + 1);
+    for (int g = 0; g < inner; g += kInterleave) {
+      std::array<std::size_t, kInterleave> at{}, end{};
+      int active = 0;
+      for (int u = g; u < std::min(inner, g + kInterleave); ++u, ++active) {
+        at[static_cast<std::size_t>(active)] = from[static_cast<std::size_t>(u)];
+        end[static_cast<std::size_t>(active)] = to[static_cast<std::size_t>(u)];
+      }
+      while (active > 0) {
+        for (int j = 0; j < active;) {
+          const std::size_t u = static_cast<std::size_t>(j);
+          f(at[u]++);
+          if (at[u] == end[u]) {
+            // This strip is done: the last active one takes its place.
+            --active;
+            at[u] = at[static_cast<std::size_t>(active)];
+            end[u] = end[static_cast<std::size_t>(active)];
+          } else {
+            ++j;
           }
         }
       }
     }
   };
+  auto byStrip = [&](int t, int& phase, auto&& f) {
+    for (int band = 0; band < bands; ++band)
+      for (int parity = 0; parity < 2; ++parity, ++phase) onePhase(t, phase, band, parity, f);
+  };
+
+  enum class Pass { WarmStart, Relaxed, Plain, Restitution, Support };
+  std::vector<Pass> velocityPasses{Pass::WarmStart};
+  velocityPasses.insert(velocityPasses.end(), static_cast<std::size_t>(iterations - 1),
+                        Pass::Relaxed);
+  velocityPasses.push_back(Pass::Plain);
+  velocityPasses.push_back(Pass::Restitution);
+  if (supportSweep) velocityPasses.push_back(Pass::Support);
+  if (settle) velocityPasses.push_back(Pass::Plain);
+  // Whole passes, one after another: a front of one band per pass (lag
+  // bands_) never has two passes at once.
+  const int lag = settings.scaleWavefront ? bandReach_ : bands;
 
   Motion* m = motion_.data();
   CellBall* ball = cellBalls_.data();
@@ -536,23 +549,48 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
   pool.run([&](int t) {
     const auto [b, e] = part(n, t, threads);
     int phase = 0;  // byStrip's phases so far: the same count on every thread
-    // Warm start: the last step's impulses, applied again.
-    byStrip(t, phase, [&](std::size_t k) {
-      Row& r = rows_[k];
-      if (r.lambdaN != 0.0 || r.lambdaT != 0.0) applyRow(m, r, r.lambdaN, r.lambdaT);
-    });
-    for (int it = 0; it + 1 < iterations; ++it)
-      byStrip(t, phase, [&](std::size_t k) { solveRow<false>(m, rows_[k], relax); });
-    byStrip(t, phase, [&](std::size_t k) { solveRow<true>(m, rows_[k], 1.0); });
-    byStrip(t, phase, [&](std::size_t k) {
-      if (bounce_[k] > 0.0) restituteRow(m, rows_[k], bounce_[k]);
-    });
-    if (supportSweep)
-      byStrip(t, phase, [&](std::size_t k) { supportRow(m, rows_[k], s.down, s.gravityStep); });
-    // The sweep changed velocities along normals only, with no impulse to
-    // show for it: a plain iteration gives the rows back their friction
-    // and impulses (the next step's warm start).
-    if (settle) byStrip(t, phase, [&](std::size_t k) { solveRow<true>(m, rows_[k], 1.0); });
+    // The velocity passes, in order: the warm start (the last step's
+    // impulses, applied again), the iterations, restitution, the support
+    // sweep and the settle iteration (the sweep changed velocities along
+    // normals only, with no impulse to show for it: a plain iteration gives
+    // the rows back their friction and impulses, the next step's warm start).
+    const auto velocityPass = [&](Pass pass, int phase, int band, int parity) {
+      switch (pass) {
+        case Pass::WarmStart:
+          return onePhase(t, phase, band, parity, [&](std::size_t k) {
+            Row& r = rows_[k];
+            if (r.lambdaN != 0.0 || r.lambdaT != 0.0) applyRow(m, r, r.lambdaN, r.lambdaT);
+          });
+        case Pass::Relaxed:
+          return onePhase(t, phase, band, parity,
+                          [&](std::size_t k) { solveRow<false>(m, rows_[k], relax); });
+        case Pass::Plain:
+          return onePhase(t, phase, band, parity,
+                          [&](std::size_t k) { solveRow<true>(m, rows_[k], 1.0); });
+        case Pass::Restitution:
+          return onePhase(t, phase, band, parity, [&](std::size_t k) {
+            if (bounce_[k] > 0.0) restituteRow(m, rows_[k], bounce_[k]);
+          });
+        case Pass::Support:
+          return onePhase(t, phase, band, parity,
+                          [&](std::size_t k) { supportRow(m, rows_[k], s.down, s.gravityStep); });
+      }
+    };
+    // As a wavefront (SolverSettings::scaleWavefront): pass p on band j
+    // follows pass p - 1 on band j + lag (at the same front, the earlier pass
+    // first). Rows more than bandReach_ bands apart share no ball, so with
+    // that lag every ball meets its rows in the order of whole passes, one
+    // after another, and gets the same bits; but the front holds about
+    // lag x passes bands, which stay in cache, where whole passes stream
+    // every row through memory once each. A lag of 0 is that order.
+    const int count = static_cast<int>(velocityPasses.size());
+    for (int front = 0; front < bands + lag * (count - 1); ++front)
+      for (int p = 0; p < count; ++p) {
+        const int band = front - lag * p;
+        if (band < 0 || band >= bands) continue;
+        for (int parity = 0; parity < 2; ++parity, ++phase)
+          velocityPass(velocityPasses[static_cast<std::size_t>(p)], phase, band, parity);
+      }
     pool.sync();  // every velocity is final before any ball moves
 
     for (std::size_t k = b; k < e; ++k) {

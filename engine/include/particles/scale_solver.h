@@ -140,6 +140,11 @@ class ScaleSolver {
   // The rows of strip k in band j (ball a's grid row / bandRows) are
   // rows_[blockStart_[k * bands_ + j], blockStart_[k * bands_ + j + 1]).
   int strips_ = 1, bands_ = 1;
+  // How many bands apart two rows' bands may be and still share a ball (a
+  // row touches its own band's balls and those of the band above, and a
+  // fast pair's up to scaleFastPairCells grid rows either way): the lag of
+  // the velocity passes' wavefront.
+  int bandReach_ = 1;
   std::vector<int> blockStart_;
   std::vector<int> stripOf_;    // per ball (cell order): its vertical strip
   std::vector<Motion> motion_;  // per ball, during the velocity iterations, strip by strip

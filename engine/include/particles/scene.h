@@ -229,6 +229,15 @@ struct SolverSettings {
   // cost about 10 % of the speed; at 100,000 they halved the largest overlap
   // at a cost within the host's noise (docs/scale.md, "Bands").
   int scaleBandsFrom = 50000;
+  // Whether the large-scene path's velocity passes (warm start, iterations,
+  // restitution, support sweep, settle iteration) run as a wavefront over
+  // the bands: pass p on band j right after pass p - 1 on band j + lag,
+  // instead of each pass over every band before the next. Rows of bands
+  // further apart than the lag share no ball, so every ball sees its rows in
+  // the same order and the result is the same to the bit; the bands a
+  // wavefront works on stay in cache (docs/scale.md, "Passes as a
+  // wavefront"). Off only to test that claim.
+  bool scaleWavefront = true;
   // Shock propagation in the large-scene path's overlap removal
   // (dimensionless, 0..1; docs/scale.md, "Shock propagation"). Under gravity
   // the part of a pair's move along gravity is shared with the lower ball's
