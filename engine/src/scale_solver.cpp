@@ -548,7 +548,7 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
   int* movedIn = movedIn_.data();
   pool.run([&](int t) {
     const auto [b, e] = part(n, t, threads);
-    int phase = 0;  // byStrip's phases so far: the same count on every thread
+    int phase = 0;  // phases so far (passes, bands, parities): the same count on every thread
     // The velocity passes, in order: the warm start (the last step's
     // impulses, applied again), the iterations, restitution, the support
     // sweep and the settle iteration (the sweep changed velocities along
@@ -582,7 +582,8 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
     // that lag every ball meets its rows in the order of whole passes, one
     // after another, and gets the same bits; but the front holds about
     // lag x passes bands, which stay in cache, where whole passes stream
-    // every row through memory once each. A lag of 0 is that order.
+    // every row through memory once each. A lag of bands_ (scaleWavefront
+    // off) is the order of whole passes.
     const int count = static_cast<int>(velocityPasses.size());
     for (int front = 0; front < bands + lag * (count - 1); ++front)
       for (int p = 0; p < count; ++p) {

@@ -236,7 +236,8 @@ struct SolverSettings {
   // further apart than the lag share no ball, so every ball sees its rows in
   // the same order and the result is the same to the bit; the bands a
   // wavefront works on stay in cache (docs/scale.md, "Passes as a
-  // wavefront"). Off only to test that claim.
+  // wavefront"). Off only to test that claim and to time the wavefront
+  // (bench --scale --no-wavefront).
   bool scaleWavefront = true;
   // Shock propagation in the large-scene path's overlap removal
   // (dimensionless, 0..1; docs/scale.md, "Shock propagation"). Under gravity
