@@ -413,10 +413,13 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
 
   const int iterations = std::max(1, settings.scaleVelocityIterations);
   const int passes = std::max(1, settings.scalePositionPasses);
-  // Below 1 it would be under-relaxation, from 2 on Gauss-Seidel diverges.
-  const double relax = std::isfinite(settings.scaleOverRelaxation)
-                           ? std::clamp(settings.scaleOverRelaxation, 1.0, 1.99)
-                           : 1.0;
+  // Below 1 it would be under-relaxation, from 2 on Gauss-Seidel diverges;
+  // with too few iterations to undo its overshoot it erupts a deep pile
+  // (SolverSettings::scaleOverRelaxationFrom).
+  const double relax =
+      iterations >= settings.scaleOverRelaxationFrom && std::isfinite(settings.scaleOverRelaxation)
+          ? std::clamp(settings.scaleOverRelaxation, 1.0, 1.99)
+          : 1.0;
   const double shock = std::clamp(settings.scaleShockPropagation, 0.0, 1.0);
   // Without gravity there is no "upper" ball: no support sweep.
   const bool supportSweep = settings.scaleVelocityShock && s.down.squaredNorm() > 0.0;

@@ -159,8 +159,20 @@ struct SolverSettings {
   // 2.23 -> 0.44 % of the radius (worst 3.19 -> 1.01 %), kinetic energy
   // 82 -> 23 J; polydisperse 3.33 -> 0.22 %, 19 -> 1.6 J. 1 turns it off.
   // A stack solved with 4 iterations or fewer can keep bouncing with w >=
-  // 1.7 (the few plain updates do not undo the overshoot).
+  // 1.7 (the few plain updates do not undo the overshoot), so it applies
+  // only from scaleOverRelaxationFrom iterations on.
   double scaleOverRelaxation = 1.8;
+  // The fewest velocity iterations (count) with which the large-scene path
+  // over-relaxes (scaleOverRelaxation); with fewer every iteration is plain
+  // Gauss-Seidel. With w = 1.8 and few iterations the overshoot of the
+  // over-relaxed updates, kept by the warm start from step to step, erupts
+  // a deep pile (docs/scale.md, "Few iterations and over-relaxation"): the
+  // 100,000 pile with 4 iterations at step ~750 (51 % overlap, balls at
+  // 67 m/s, then the row budget's StepError), with 2 by step 300, the
+  // 10,000 pile with 2 by step 900; with w = 1 the same piles stay whole
+  // (softer: 9-14 % overlap). With 6 iterations the 100,000 pile held
+  // for 1,800 steps. 1 over-relaxes at any count.
+  int scaleOverRelaxationFrom = 6;
   // Upper bound on overlap-removal passes of the large-scene path (count);
   // passes stop as soon as one moves nothing. 2, not 4, since the
   // over-relaxed iterations leave little overlap: at w = 1.8, 4 passes gave
