@@ -19,10 +19,11 @@ namespace particles::cli {
 namespace {
 
 // clang-format off
-constexpr std::array<std::string_view, 15> kScaleOnly{
+constexpr std::array<std::string_view, 18> kScaleOnly{
     "--n", "--threads", "--poly", "--steps", "--no-box2d", "--iterations", "--position-passes",
     "--fast-pair-cells", "--band-rows", "--relaxation", "--shock", "--seed", "--seeds",
-    "--no-velocity-shock", "--no-settle-iteration"};
+    "--no-velocity-shock", "--no-settle-iteration", "--no-wavefront", "--substeps",
+    "--contact-hertz"};
 // clang-format on
 constexpr std::array<std::string_view, 6> kTimestepOnly{
     "--repeats", "--full", "--scene", "--skip-csv", "--no-skip-study", "--report"};

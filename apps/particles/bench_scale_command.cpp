@@ -28,7 +28,7 @@ constexpr long long kPhaseSplit = 300;
 constexpr long long kLastSteps = 60;  // kinetic energy window at the end
 
 struct RunFigures {
-  std::string engine;  // "engine" or "box2d"
+  std::string engine;  // "engine", "soft" (the engine's soft step) or "box2d"
   std::uint64_t seed = 0;
   int count = 0;
   int threads = 1;
@@ -109,7 +109,7 @@ void printTable(const std::vector<RunFigures>& rows,
               "ovl mean", "KE last60", "rest", "out", "B/ball", "x Box2D", "ovl/B2D", "seed");
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const RunFigures& r = rows[i];
-    const bool engine = r.engine == "engine";
+    const bool engine = r.engine != "box2d";
     double timeRatio = NAN, overlapRatio = NAN;
     if (engine && ref[i]) {
       timeRatio = r.diskStepsPerSecond / ref[i]->diskStepsPerSecond;
@@ -126,7 +126,8 @@ void printTable(const std::vector<RunFigures>& rows,
         static_cast<unsigned long long>(r.seed));
   }
   std::printf(
-      "K: velocity iterations per step; ms: mean wall time per step; KE last60: mean kinetic "
+      "K: velocity iterations per step (soft: substeps); ms: mean wall time per step; KE last60: "
+      "mean kinetic "
       "energy (J) over the last 60 steps; rest: the step from which KE stays <= "
       "M (%.2g m/s)^2 / 2 (\"no\": not at rest at the end); out: balls with their centre "
       "outside the box at the end; x Box2D: disk-steps/s engine / "
@@ -163,7 +164,7 @@ void printSeedSummary(const std::vector<RunFigures>& rows,
       done[j] = true;
       ++runs;
       speed.push_back(r.diskStepsPerSecond);
-      if (r.engine == "engine" && ref[j])
+      if (r.engine != "box2d" && ref[j])
         ratio.push_back(r.diskStepsPerSecond / ref[j]->diskStepsPerSecond);
       maxSum += r.overlap.max;
       maxWorst = std::max(maxWorst, r.overlap.max);
@@ -194,7 +195,7 @@ void writeCsv(std::ostream& out, const std::vector<RunFigures>& rows,
          "seed\n";
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const RunFigures& r = rows[i];
-    const bool withRef = r.engine == "engine" && ref[i].has_value();
+    const bool withRef = r.engine != "box2d" && ref[i].has_value();
     out << r.engine << ',' << r.count << ',' << (poly ? 1 : 0) << ',' << r.threads << ','
         << r.iterations << ',' << r.steps << ',' << general(r.msFalling) << ','
         << general(r.msSettled) << ',' << general(r.diskStepsPerSecond) << ','
@@ -232,14 +233,16 @@ void addScaleBenchOptions(CLI::App& bench, ScaleBenchOptions& o) {
   bench.add_flag("--no-box2d", o.noBox2D, "Engine only, no Box2D run");
   // --csv FILE is registered once for both benchmarks (bench_command.cpp);
   // with --scale it names this CSV (default pile.csv; '' = none).
-  bench
-      .add_option("--iterations", o.iterations,
-                  "Engine velocity iterations per step on the large-scene path, one engine run "
-                  "per value and thread count (default: SolverSettings::scaleVelocityIterations, "
-                  "8): run time against error in one run, against one Box2D run per N")
-      ->type_name("K...")
-      ->expected(1, 16)
-      ->check(integerInRange(1, 10000));
+  CLI::Option* iterations =
+      bench
+          .add_option(
+              "--iterations", o.iterations,
+              "Engine velocity iterations per step on the large-scene path, one engine run "
+              "per value and thread count (default: SolverSettings::scaleVelocityIterations, "
+              "8): run time against error in one run, against one Box2D run per N")
+          ->type_name("K...")
+          ->expected(1, 16)
+          ->check(integerInRange(1, 10000));
   bench
       .add_option("--position-passes", o.positionPasses,
                   "Engine overlap-removal passes per step on the large-scene path (default: "
@@ -281,6 +284,20 @@ void addScaleBenchOptions(CLI::App& bench, ScaleBenchOptions& o) {
   bench.add_flag("--no-wavefront", o.noWavefront,
                  "Engine with its velocity passes one after another instead of as a wavefront "
                  "over the bands (SolverSettings::scaleWavefront; the same bits)");
+  bench
+      .add_option("--substeps", o.substeps,
+                  "Engine with the soft step on the large-scene path, S substeps a step, 1 to 64 "
+                  "(SolverSettings::scaleSubsteps; default 0: the rigid step); its rows say "
+                  "\"soft\" and K is S")
+      ->type_name("S")
+      ->check(integerInRange(1, 64))
+      ->excludes(iterations);
+  bench
+      .add_option("--contact-hertz", o.contactHertz,
+                  "Stiffness of the soft step's contacts, Hz, 1 to 10000, at most a quarter of "
+                  "the substep rate (SolverSettings::scaleContactHertz; default: that most)")
+      ->type_name("HZ")
+      ->check(finiteInRange(1.0, 10000.0));
   bench.add_option("--seed", o.seed, "Seed of the grid's jitter and radii (default 20261201)")
       ->type_name("SEED")
       ->check(unsigned64());
@@ -344,6 +361,8 @@ int runScaleBench(const ScaleBenchOptions& o) {
           if (o.noVelocityShock) scene.solver.scaleVelocityShock = false;
           if (o.noSettleIteration) scene.solver.scaleSettleIteration = false;
           if (o.noWavefront) scene.solver.scaleWavefront = false;
+          if (o.substeps > 0) scene.solver.scaleSubsteps = o.substeps;
+          if (o.contactHertz > 0.0) scene.solver.scaleContactHertz = o.contactHertz;
           World world(scene);
           RunFigures f;
           try {
@@ -357,12 +376,13 @@ int runScaleBench(const ScaleBenchOptions& o) {
             stopped = true;
             continue;
           }
-          f.engine = "engine";
+          f.engine = o.substeps > 0 ? "soft" : "engine";
           f.seed = params.seed;
           f.threads = t;
-          f.iterations = k;
+          f.iterations = o.substeps > 0 ? o.substeps : k;
           f.bytesPerBall = static_cast<double>(world.memoryBytes()) / n;
-          std::fprintf(stderr, "particles: bench: engine N=%d T=%d K=%d seed %llu done\n", n, t, k,
+          std::fprintf(stderr, "particles: bench: %s N=%d T=%d K=%d seed %llu done\n",
+                       f.engine.c_str(), n, t, f.iterations,
                        static_cast<unsigned long long>(params.seed));
           rows.push_back(f);
           ref.push_back(box2d);

@@ -36,6 +36,9 @@ struct ScaleBenchOptions {
   bool noSettleIteration = false;
   // --no-wavefront: SolverSettings::scaleWavefront off (same bits, whole passes)
   bool noWavefront = false;
+  // --substeps: SolverSettings::scaleSubsteps, the soft step (0 = the rigid step, the default)
+  int substeps = 0;
+  double contactHertz = 0.0;  // --contact-hertz: SolverSettings::scaleContactHertz (0 = default)
 };
 
 // Registers the options above on the `bench` subcommand.

@@ -367,7 +367,8 @@ void ScaleSolver::findFastReach(const ScaleBodies& s, const Grid& grid, int k, i
   pool.sync();
 }
 
-void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool, int fastCells, int bandRows) {
+void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool, int fastCells, int bandRows,
+                           bool soft) {
   const std::size_t n = s.position.size();
   // Plain names, not a structured binding: the lambdas below use them, and
   // clang before 16 (Debian 12 has 14) cannot capture a structured binding.
@@ -587,6 +588,7 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool, int fastCells
       rows_.resize(linkStart_.back());
       pairs_.resize(linkStart_.back());
       bounce_.resize(linkStart_.back());
+      if (soft) separation_.resize(linkStart_.back());
       // Where each thread's rows of each strip and band start, so that a
       // strip's rows are in (a, b) order (the bands of a strip follow each
       // other, since a's band grows with a).
@@ -660,6 +662,7 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool, int fastCells
       rows_[static_cast<std::size_t>(pos)] = r;
       pairs_[static_cast<std::size_t>(pos)] = {a, b, reach};
       bounce_[static_cast<std::size_t>(pos)] = bounce;
+      if (soft) separation_[static_cast<std::size_t>(pos)] = dist - reach;
       slot[k] = pos;
     }
   });

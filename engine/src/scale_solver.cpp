@@ -11,6 +11,7 @@
 #include "particles/swept_wall.h"
 #include "particles/world.h"
 #include "scale_common.h"
+#include "scale_soft.h"
 
 namespace particles {
 namespace {
@@ -252,7 +253,9 @@ inline bool movesPastTheMargin(const Vec2& v, double radius, double dt) {
 // this many impacts, and then moves freely for what is left of the step.
 constexpr int kGuardImpacts = 4;
 
-inline void moveGuarded(ScaleSolver::CellBall& ball, ScaleSolver::Motion& m, const ScaleBodies& s) {
+// Returns whether the ball struck a wall.
+inline bool moveGuarded(ScaleSolver::CellBall& ball, ScaleSolver::Motion& m, const ScaleBodies& s) {
+  bool hitAny = false;
   const auto index = static_cast<std::size_t>(ball.index);
   const auto impact = [&](std::size_t wall, const Vec2& normal) {
     ContactBody self{
@@ -292,7 +295,7 @@ inline void moveGuarded(ScaleSolver::CellBall& ball, ScaleSolver::Motion& m, con
           m.velocity.dot(on.normal) <= 0.0)
         continue;
       impact(w, on.normal);
-      struck = true;
+      struck = hitAny = true;
     }
     if (struck) pathBox(lo, hi, left);
     std::optional<SweptHit> first;
@@ -311,8 +314,10 @@ inline void moveGuarded(ScaleSolver::CellBall& ball, ScaleSolver::Motion& m, con
     ball.position += first->time * m.velocity;
     left -= first->time;
     impact(wall, first->normal);
+    hitAny = true;
   }
   ball.position += left * m.velocity;
+  return hitAny;
 }
 
 // Moves a row's bodies apart by their whole overlap, shared by inverse mass
@@ -382,7 +387,8 @@ std::size_t ScaleSolver::memoryBytes() const {
   std::size_t bytes =
       sizeof(Row) * rows_.capacity() + sizeof(Pair) * pairs_.capacity() +
       sizeof(double) * (bounce_.capacity() + invMass_.capacity()) +
-      sizeof(Motion) * motion_.capacity() +
+      sizeof(double) * (separation_.capacity() + totalN_.capacity() + totalT_.capacity()) +
+      sizeof(Moved) * moved_.capacity() + sizeof(Motion) * motion_.capacity() +
       sizeof(int) * (blockStart_.capacity() + blockCount_.capacity()) +
       sizeof(int) * (lastStart_.capacity() + lastOther_.capacity() + lastOf_.capacity()) +
       sizeof(int) * stripOf_.capacity() + sizeof(int) * slot_.capacity() +
@@ -409,7 +415,9 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
   ThreadPool& pool = pool_.get(parallel ? std::max(1, settings.threads) : 1);
   const int threads = pool.size();
   const bool banded = static_cast<long long>(n) >= settings.scaleBandsFrom;
-  findRows(s, pool, settings.scaleFastPairCells, banded ? settings.scaleBandRows : 0);
+  const int substeps = std::max(0, settings.scaleSubsteps);
+  const bool soft = substeps > 0;
+  findRows(s, pool, settings.scaleFastPairCells, banded ? settings.scaleBandRows : 0, soft);
 
   const int iterations = std::max(1, settings.scaleVelocityIterations);
   const int passes = std::max(1, settings.scalePositionPasses);
@@ -422,7 +430,8 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
           : 1.0;
   const double shock = std::clamp(settings.scaleShockPropagation, 0.0, 1.0);
   // Without gravity there is no "upper" ball: no support sweep.
-  const bool supportSweep = settings.scaleVelocityShock && s.down.squaredNorm() > 0.0;
+  // Nor in the soft step, whose impulses carry the weight.
+  const bool supportSweep = !soft && settings.scaleVelocityShock && s.down.squaredNorm() > 0.0;
   // The settle iteration repairs what the support sweep did, once the pile
   // has settled (SolverSettings::scaleSettleIteration; settled_ says when).
   const bool settleCheck = supportSweep && settings.scaleSettleIteration;
@@ -549,93 +558,218 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
   CellBall* ball = cellBalls_.data();
   movedIn_.resize(n);
   int* movedIn = movedIn_.data();
+
+  // The soft step (SolverSettings::scaleSubsteps; docs/scale.md, "The soft
+  // step"). Thread t moves, and adds the forces to, its own range [b, e) of
+  // balls in cell order; a barrier before and after each such loop, since
+  // the rows of other threads touch those balls.
+  scale::SoftStep softStep;
+  if (soft) {
+    softStep.h = s.dt / substeps;
+    // At most a quarter of the substep rate, Box2D v3's bound for its soft
+    // step (a spring much faster than the substep is no longer resolved by
+    // it; not measured beyond the bound here); walls, which carry the whole
+    // pile, get twice the stiffness, as there.
+    const double most = 0.25 / softStep.h;
+    const double hertz = settings.scaleContactHertz > 0.0
+                             ? std::clamp(settings.scaleContactHertz, 1e-3, most)
+                             : most;
+    const double zeta = std::max(0.0, settings.scaleContactDampingRatio);
+    softStep.balls = scale::contactSpring(hertz, zeta, softStep.h);
+    softStep.walls = scale::contactSpring(std::min(2.0 * hertz, 2.0 * most), zeta, softStep.h);
+    softStep.pushSpeed = std::max(0.0, settings.scaleContactPushSpeed);
+    moved_.resize(motion_.size());
+    totalN_.assign(rows_.size(), 0.0);
+    totalT_.assign(rows_.size(), 0.0);
+  }
+  const auto softPasses = [&](int t, std::size_t b, std::size_t e, int& phase) {
+    Moved* mv = moved_.data();
+    const bool forced = !s.forcedVelocity.empty();
+    const double share = 1.0 / substeps;
+    const auto forceOf = [&](std::size_t k) {
+      return s.forcedVelocity[static_cast<std::size_t>(ball[k].index)];
+    };
+    // The forces are added a substep's share at a time.
+    for (std::size_t k = b; k < e; ++k) {
+      const auto slot = static_cast<std::size_t>(slotOf_[k]);
+      mv[slot] = Moved{};
+      if (forced) m[slot].velocity -= forceOf(k);
+    }
+    const auto softRow = [&]<bool kSpring>(std::size_t k) {
+      Row& r = rows_[k];
+      Motion* other = r.b >= 0 ? &m[r.b] : nullptr;
+      const Vec2 movedB = r.b >= 0 ? mv[r.b].by : Vec2::Zero();
+      const double gap = separation_[k] + (movedB - mv[r.a].by).dot(r.normal());
+      scale::softRow<kSpring>(m[r.a], other, r, gap, softStep);
+    };
+    for (int u = 0; u < substeps; ++u) {
+      pool.sync();
+      if (forced)
+        for (std::size_t k = b; k < e; ++k)
+          m[static_cast<std::size_t>(slotOf_[k])].velocity += share * forceOf(k);
+      pool.sync();
+      byStrip(t, phase, [&](std::size_t k) {
+        const Row& r = rows_[k];
+        if (r.lambdaN != 0.0 || r.lambdaT != 0.0) applyRow(m, r, r.lambdaN, r.lambdaT);
+      });
+      byStrip(t, phase, [&](std::size_t k) { softRow.template operator()<true>(k); });
+      pool.sync();
+      for (std::size_t k = b; k < e; ++k) {
+        const auto slot = static_cast<std::size_t>(slotOf_[k]);
+        mv[slot].by += softStep.h * m[slot].velocity;
+        mv[slot].turned += softStep.h * m[slot].angularVelocity;
+      }
+      pool.sync();
+      // Relax: the spring's push taken out of the velocities; what each row
+      // gave in this substep is its impulse now (the warm start gave the
+      // last substep's, the updates the rest).
+      byStrip(t, phase, [&](std::size_t k) {
+        softRow.template operator()<false>(k);
+        totalN_[k] += rows_[k].lambdaN;
+        totalT_[k] += rows_[k].lambdaT;
+      });
+    }
+    // The bounce: -e times the approach the bodies brought into the step
+    // (the rigid step's target of a touching row, bounce_ of a speculative
+    // one), for the rows that pushed.
+    byStrip(t, phase, [&](std::size_t k) {
+      Row& r = rows_[k];
+      const double bounce = bounce_[k] > 0.0 ? bounce_[k] : std::max(0.0, r.target);
+      if (bounce <= 0.0 || totalN_[k] <= 0.0) return;
+      const Vec2 vb = r.b >= 0 ? m[r.b].velocity : Vec2::Zero();
+      const double gn = (vb - m[r.a].velocity).dot(r.normal());
+      const double ln = std::max(0.0, r.lambdaN + (bounce - gn) * r.massN);
+      const double dn = ln - r.lambdaN;
+      r.lambdaN = ln;
+      totalN_[k] += dn;
+      if (dn != 0.0) applyRow(m, r, dn, 0.0);
+    });
+    pool.sync();
+    // The balls took their substeps' moves; one that moved past the rows'
+    // margin may have met a wall it has no row with, and is moved again
+    // with the wall guard, at the mean velocity of its moves.
+    for (std::size_t k = b; k < e; ++k) {
+      const auto slot = static_cast<std::size_t>(slotOf_[k]);
+      const Vec2 by = mv[slot].by;
+      if (guard && movesPastTheMargin(by / s.dt, ball[k].radius, s.dt)) {
+        Motion path = m[slot];
+        path.velocity = by / s.dt;
+        if (moveGuarded(ball[k], path, s)) {
+          m[slot].velocity = path.velocity;
+          m[slot].angularVelocity = path.angularVelocity;
+        }
+      } else {
+        ball[k].position += by;
+      }
+    }
+    pool.sync();
+    // The deepest overlap, measured only: the springs hold it.
+    double& deepest = seen[static_cast<std::size_t>(t)].deepest;
+    const auto [rb, re] = part(pairs_.size(), t, threads);
+    for (std::size_t k = rb; k < re; ++k) {
+      const Pair& p = pairs_[k];
+      if (p.b < 0) {
+        WallHit hit;
+        if (touchWall(ball[p.a].position, p.reach, s.walls[static_cast<std::size_t>(-1 - p.b)],
+                      hit))
+          deepest = std::max(deepest, hit.overlap);
+      } else {
+        const double dist = (ball[p.b].position - ball[p.a].position).norm();
+        deepest = std::max(deepest, p.reach - dist);
+      }
+    }
+  };
   pool.run([&](int t) {
     const auto [b, e] = part(n, t, threads);
     int phase = 0;  // phases so far (passes, bands, parities): the same count on every thread
-    // The velocity passes, in order: the warm start (the last step's
-    // impulses, applied again), the iterations, restitution, the support
-    // sweep and the settle iteration (the sweep changed velocities along
-    // normals only, with no impulse to show for it: a plain iteration gives
-    // the rows back their friction and impulses, the next step's warm start).
-    const auto velocityPass = [&](Pass pass, int phase, int band, int parity) {
-      switch (pass) {
-        case Pass::WarmStart:
-          return onePhase(t, phase, band, parity, [&](std::size_t k) {
-            Row& r = rows_[k];
-            if (r.lambdaN != 0.0 || r.lambdaT != 0.0) applyRow(m, r, r.lambdaN, r.lambdaT);
-          });
-        case Pass::Relaxed:
-          return onePhase(t, phase, band, parity,
-                          [&](std::size_t k) { solveRow<false>(m, rows_[k], relax); });
-        case Pass::Plain:
-          return onePhase(t, phase, band, parity,
-                          [&](std::size_t k) { solveRow<true>(m, rows_[k], 1.0); });
-        case Pass::Restitution:
-          return onePhase(t, phase, band, parity, [&](std::size_t k) {
-            if (bounce_[k] > 0.0) restituteRow(m, rows_[k], bounce_[k]);
-          });
-        case Pass::Support:
-          return onePhase(t, phase, band, parity,
-                          [&](std::size_t k) { supportRow(m, rows_[k], s.down, s.gravityStep); });
-      }
-    };
-    // As a wavefront (SolverSettings::scaleWavefront): pass p on band j
-    // follows pass p - 1 on band j + lag (at the same front, the earlier pass
-    // first). Rows more than bandReach_ bands apart share no ball, so with
-    // that lag every ball meets its rows in the order of whole passes, one
-    // after another, and gets the same bits; but the front holds about
-    // lag x passes bands, which stay in cache, where whole passes stream
-    // every row through memory once each. A lag of bands_ (scaleWavefront
-    // off) is the order of whole passes.
-    const int count = static_cast<int>(velocityPasses.size());
-    for (int front = 0; front < bands + lag * (count - 1); ++front)
-      for (int p = 0; p < count; ++p) {
-        const int band = front - lag * p;
-        if (band < 0 || band >= bands) continue;
-        for (int parity = 0; parity < 2; ++parity, ++phase)
-          velocityPass(velocityPasses[static_cast<std::size_t>(p)], phase, band, parity);
-      }
-    pool.sync();  // every velocity is final before any ball moves
-
-    for (std::size_t k = b; k < e; ++k) {
-      movedIn[k] = -1;
-      Motion& mk = m[slotOf_[k]];
-      if (guard && movesPastTheMargin(mk.velocity, ball[k].radius, s.dt))
-        moveGuarded(ball[k], mk, s);
-      else
-        ball[k].position += s.dt * mk.velocity;
-    }
-    pool.sync();
-
-    double& deepest = seen[static_cast<std::size_t>(t)].deepest;
-    for (int pass = 0; pass < passes; ++pass) {
-      char& mine = seen[static_cast<std::size_t>(t)].moved[static_cast<std::size_t>(pass % 2)];
-      mine = 0;
-      byStrip(t, phase, [&](std::size_t k) {
-        const Pair& r = pairs_[k];
-        // A row whose balls no pass moved since it last looked finds them
-        // where it left them, overlapping by no more than its tolerance (it
-        // would have moved them otherwise): it would do nothing again. So
-        // from the second pass on only the rows beside a move are looked
-        // at, for the same bits as looking at them all.
-        const int since = pass - 1;
-        if (movedIn[r.a] < since && (r.b < 0 || movedIn[r.b] < since)) return;
-        const double overlap = projectRow(ball, invMass_.data(), s, r, shock);
-        if (pass == 0) deepest = std::max(deepest, overlap);
-        if (overlap > kOverlapTolerance * r.reach) {
-          mine = 1;
-          movedIn[r.a] = pass;
-          if (r.b >= 0) movedIn[r.b] = pass;
+    if (soft) {
+      softPasses(t, b, e, phase);
+    } else {
+      // The velocity passes, in order: the warm start (the last step's
+      // impulses, applied again), the iterations, restitution, the support
+      // sweep and the settle iteration (the sweep changed velocities along
+      // normals only, with no impulse to show for it: a plain iteration gives
+      // the rows back their friction and impulses, the next step's warm start).
+      const auto velocityPass = [&](Pass pass, int phase, int band, int parity) {
+        switch (pass) {
+          case Pass::WarmStart:
+            return onePhase(t, phase, band, parity, [&](std::size_t k) {
+              Row& r = rows_[k];
+              if (r.lambdaN != 0.0 || r.lambdaT != 0.0) applyRow(m, r, r.lambdaN, r.lambdaT);
+            });
+          case Pass::Relaxed:
+            return onePhase(t, phase, band, parity,
+                            [&](std::size_t k) { solveRow<false>(m, rows_[k], relax); });
+          case Pass::Plain:
+            return onePhase(t, phase, band, parity,
+                            [&](std::size_t k) { solveRow<true>(m, rows_[k], 1.0); });
+          case Pass::Restitution:
+            return onePhase(t, phase, band, parity, [&](std::size_t k) {
+              if (bounce_[k] > 0.0) restituteRow(m, rows_[k], bounce_[k]);
+            });
+          case Pass::Support:
+            return onePhase(t, phase, band, parity,
+                            [&](std::size_t k) { supportRow(m, rows_[k], s.down, s.gravityStep); });
         }
-      });
-      pool.sync();  // every thread's flags of this pass are written
-      bool any = false;
-      for (const Seen& m : seen) any = any || m.moved[static_cast<std::size_t>(pass % 2)] != 0;
-      if (t == 0 && any) passesUsed = pass + 1;
-      // No barrier before the next pass: it writes the other flags, and the
-      // pass after it cannot start before every thread has read these (it
-      // waits at the barrier above in between).
-      if (!any) break;
+      };
+      // As a wavefront (SolverSettings::scaleWavefront): pass p on band j
+      // follows pass p - 1 on band j + lag (at the same front, the earlier pass
+      // first). Rows more than bandReach_ bands apart share no ball, so with
+      // that lag every ball meets its rows in the order of whole passes, one
+      // after another, and gets the same bits; but the front holds about
+      // lag x passes bands, which stay in cache, where whole passes stream
+      // every row through memory once each. A lag of bands_ (scaleWavefront
+      // off) is the order of whole passes.
+      const int count = static_cast<int>(velocityPasses.size());
+      for (int front = 0; front < bands + lag * (count - 1); ++front)
+        for (int p = 0; p < count; ++p) {
+          const int band = front - lag * p;
+          if (band < 0 || band >= bands) continue;
+          for (int parity = 0; parity < 2; ++parity, ++phase)
+            velocityPass(velocityPasses[static_cast<std::size_t>(p)], phase, band, parity);
+        }
+      pool.sync();  // every velocity is final before any ball moves
+
+      for (std::size_t k = b; k < e; ++k) {
+        movedIn[k] = -1;
+        Motion& mk = m[slotOf_[k]];
+        if (guard && movesPastTheMargin(mk.velocity, ball[k].radius, s.dt))
+          moveGuarded(ball[k], mk, s);
+        else
+          ball[k].position += s.dt * mk.velocity;
+      }
+      pool.sync();
+
+      double& deepest = seen[static_cast<std::size_t>(t)].deepest;
+      for (int pass = 0; pass < passes; ++pass) {
+        char& mine = seen[static_cast<std::size_t>(t)].moved[static_cast<std::size_t>(pass % 2)];
+        mine = 0;
+        byStrip(t, phase, [&](std::size_t k) {
+          const Pair& r = pairs_[k];
+          // A row whose balls no pass moved since it last looked finds them
+          // where it left them, overlapping by no more than its tolerance (it
+          // would have moved them otherwise): it would do nothing again. So
+          // from the second pass on only the rows beside a move are looked
+          // at, for the same bits as looking at them all.
+          const int since = pass - 1;
+          if (movedIn[r.a] < since && (r.b < 0 || movedIn[r.b] < since)) return;
+          const double overlap = projectRow(ball, invMass_.data(), s, r, shock);
+          if (pass == 0) deepest = std::max(deepest, overlap);
+          if (overlap > kOverlapTolerance * r.reach) {
+            mine = 1;
+            movedIn[r.a] = pass;
+            if (r.b >= 0) movedIn[r.b] = pass;
+          }
+        });
+        pool.sync();  // every thread's flags of this pass are written
+        bool any = false;
+        for (const Seen& m : seen) any = any || m.moved[static_cast<std::size_t>(pass % 2)] != 0;
+        if (t == 0 && any) passesUsed = pass + 1;
+        // No barrier before the next pass: it writes the other flags, and the
+        // pass after it cannot start before every thread has read these (it
+        // waits at the barrier above in between).
+        if (!any) break;
+      }
     }
 
     // Back to the scene's numbering. No thread moves a ball any more: the
@@ -646,7 +780,7 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
       s.position[i] = ball[k].position;
       s.velocity[i] = mk.velocity;
       s.angularVelocity[i] = mk.angularVelocity;
-      if (s.spin) s.angle[i] += s.dt * mk.angularVelocity;
+      if (s.spin) s.angle[i] += soft ? moved_[slotOf_[k]].turned : s.dt * mk.angularVelocity;
     }
   });
 
@@ -681,17 +815,21 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
     // both impulses as they are.
     impacts->clear();
     for (std::size_t k = 0; k < slot_.size(); ++k) {
-      const Row& r = rows_[static_cast<std::size_t>(slot_[k])];
-      const Pair& p = pairs_[static_cast<std::size_t>(slot_[k])];
-      if (r.lambdaN == 0.0) continue;
+      const auto row = static_cast<std::size_t>(slot_[k]);
+      const Row& r = rows_[row];
+      const Pair& p = pairs_[row];
+      // The soft step's rows hold one substep's impulses; the step's are
+      // their sums.
+      const double ln = soft ? totalN_[row] : r.lambdaN, lt = soft ? totalT_[row] : r.lambdaT;
+      if (ln == 0.0) continue;
       const bool wall = r.b < 0;
       ImpactEvent e{ball[p.a].index,
                     wall ? -1 - r.b : ball[p.b].index,
                     wall,
                     r.normal(),
-                    r.lambdaN,
-                    r.lambdaT,
-                    r.friction == 0.0 ? 0.0 : r.friction * r.lambdaN};
+                    ln,
+                    lt,
+                    r.friction == 0.0 ? 0.0 : r.friction * ln};
       if (!wall && e.b < e.a) {
         std::swap(e.a, e.b);
         e.normal = -e.normal;
@@ -712,7 +850,7 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
     settled_ = speed2 < static_cast<double>(n) * s.gravityStep * s.gravityStep;
   }
   stats.contacts = static_cast<int>(rows_.size());
-  stats.passes = iterations + (settle ? 1 : 0);
+  stats.passes = soft ? 2 * substeps : iterations + (settle ? 1 : 0);
   stats.correctionPasses = passesUsed;
   double deepest = 0.0;
   for (const Seen& m : seen) deepest = std::max(deepest, m.deepest);

@@ -32,6 +32,12 @@ TEST(CliBenchScale, BadArgumentsAreExitTwo) {
   expectBadInput("bench --scale --shock inf --csv ''", "--shock");
   expectBadInput("bench --scale --seeds 0 --csv ''", "--seeds");
   expectBadInput("bench --scale --seeds two --csv ''", "--seeds");
+  expectBadInput("bench --scale --substeps 0 --csv ''", "--substeps");
+  expectBadInput("bench --scale --substeps 65 --csv ''", "--substeps");
+  expectBadInput("bench --scale --contact-hertz nan --csv ''", "--contact-hertz");
+  expectBadInput("bench --scale --contact-hertz 0 --csv ''", "--contact-hertz");
+  // The soft step has substeps, not iterations.
+  expectBadInput("bench --scale --substeps 4 --iterations 8 --csv ''", "--iterations");
 }
 
 // Without --scale, bench is the catalogue benchmark: an option of the pile's
@@ -45,6 +51,9 @@ TEST(CliBenchScale, OptionsOfTheOtherBenchmarkAreExitTwo) {
   expectBadInput("bench --no-settle-iteration", "--no-settle-iteration needs --scale");
   expectBadInput("bench --band-rows 2", "--band-rows needs --scale");
   expectBadInput("bench --fast-pair-cells 1", "--fast-pair-cells needs --scale");
+  expectBadInput("bench --no-wavefront", "--no-wavefront needs --scale");
+  expectBadInput("bench --substeps 4", "--substeps needs --scale");
+  expectBadInput("bench --contact-hertz 60", "--contact-hertz needs --scale");
   expectBadInput("bench --scale --n 10 --full", "--full is an option of the catalogue benchmark");
 }
 
@@ -65,6 +74,27 @@ TEST(CliBenchScale, TinyRunWritesTableAndCsv) {
   EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 4) << text;  // header, T=1, T=2, box2d
   EXPECT_NE(text.find("\nengine,60,0,2,8,4,"), std::string::npos) << text;
   EXPECT_NE(text.find("\nbox2d,60,0,1,8,4,"), std::string::npos) << text;
+}
+
+// The soft step's run is a row of its own: engine "soft", K its substeps,
+// with its ratios to the Box2D run.
+TEST(CliBenchScale, SoftStepRunIsASoftRow) {
+  TempDir dir;
+  const std::string csv = dir.file("pile.csv").string();
+  const CliResult r =
+      runCli("bench --scale --n 60 --steps 4 --substeps 4 --csv " + shellQuote(csv));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("\nsoft "), std::string::npos) << r.out;
+  const std::string text = readFile(csv);
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 3) << text;  // header, soft, box2d
+  const std::size_t at = text.find("\nsoft,60,0,1,4,4,");
+  ASSERT_NE(at, std::string::npos) << text;
+  const std::string line = text.substr(at + 1, text.find('\n', at + 1) - at - 1);
+  // speed_ratio_engine_over_box2d (field 18) is filled in.
+  std::istringstream fields(line);
+  std::string field;
+  for (int i = 0; i <= 18; ++i) std::getline(fields, field, ',');
+  EXPECT_FALSE(field.empty()) << line;
 }
 
 // A CSV line without its fields [first, last] (0-based); each field kept

@@ -111,7 +111,9 @@ class ScaleSolver {
   Grid buildGrid(const ScaleBodies& bodies, ThreadPool& pool);
   // fastCells: SolverSettings::scaleFastPairCells; bandRows:
   // SolverSettings::scaleBandRows.
-  void findRows(const ScaleBodies& bodies, ThreadPool& pool, int fastCells, int bandRows);
+  // soft: also fill separation_ (the soft step's rows).
+  void findRows(const ScaleBodies& bodies, ThreadPool& pool, int fastCells, int bandRows,
+                bool soft);
   // Rows for fast pairs: each ball's reach beyond touching (m) for the
   // longer search, 0 for a ball that needs none (fastReach_, cell order).
   void findFastReach(const ScaleBodies& bodies, const Grid& grid, int fastCells, int t,
@@ -137,6 +139,18 @@ class ScaleSolver {
   // gap within the step: -e times the approach they brought. 0: no
   // restitution pass for this row.
   std::vector<double> bounce_;
+  // The soft step's (SolverSettings::scaleSubsteps), per row in the same
+  // order: the gap at the start of the step (m, < 0: overlap), and the
+  // impulses the row gave over the whole step (N s; its lambdaN and lambdaT
+  // are those of one substep, what the next substep and step start from).
+  std::vector<double> separation_, totalN_, totalT_;
+  // The soft step's, per ball in motion_'s order: how far it has moved and
+  // turned so far in this step (m, rad).
+  struct Moved {
+    Vec2 by{0.0, 0.0};
+    double turned = 0.0;
+  };
+  std::vector<Moved> moved_;
   // The rows of strip k in band j (ball a's grid row / bandRows) are
   // rows_[blockStart_[k * bands_ + j], blockStart_[k * bands_ + j + 1]).
   int strips_ = 1, bands_ = 1;
