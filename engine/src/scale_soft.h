@@ -1,5 +1,6 @@
 // The soft step's row updates (SolverSettings::scaleSubsteps; docs/scale.md,
-// "The soft step"). Internal to the large-scene path.
+// "The soft step"), and the friction update it shares with the rigid step.
+// Internal to the large-scene path.
 #pragma once
 
 #include <algorithm>
@@ -9,6 +10,20 @@
 #include "particles/scale_solver.h"
 
 namespace particles::scale {
+
+// The change of a row's accumulated friction impulse that cancels the
+// tangential relative velocity gt, clamped so that |lambdaT| <= mu lambdaN
+// (no bound for mu = infinity, no-slip); the row keeps the new total.
+inline double frictionChange(ScaleSolver::Row& r, double gt) {
+  double lt = r.lambdaT - gt * r.massT;
+  if (!std::isinf(r.friction)) {
+    const double bound = r.friction * r.lambdaN;
+    lt = std::clamp(lt, -bound, bound);
+  }
+  const double dt = lt - r.lambdaT;
+  r.lambdaT = lt;
+  return dt;
+}
 
 // A contact spring of `hertz` and damping ratio `zeta`, solved implicitly
 // over a substep of h seconds, as three numbers for the velocity update.
@@ -73,14 +88,7 @@ inline void softRow(ScaleSolver::Motion& a, ScaleSolver::Motion* b, ScaleSolver:
   va -= a.invMass * (dn * n);
   vb += ib * (dn * n);
   if (r.friction > 0.0) {
-    const double gt = (vb - va).dot(tau) - wb * rb - wa * a.radius;
-    double lt = r.lambdaT - gt * r.massT;
-    if (!std::isinf(r.friction)) {
-      const double bound = r.friction * r.lambdaN;
-      lt = std::clamp(lt, -bound, bound);
-    }
-    const double dt = lt - r.lambdaT;
-    r.lambdaT = lt;
+    const double dt = frictionChange(r, (vb - va).dot(tau) - wb * rb - wa * a.radius);
     va -= a.invMass * (dt * tau);
     wa -= a.radius * dt * a.invInertia;
     vb += ib * (dt * tau);

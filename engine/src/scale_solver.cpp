@@ -22,6 +22,7 @@ constexpr int kInterleave = 8;
 // The same rounding floor as the small-scene overlap removal (world.cpp).
 constexpr double kOverlapTolerance = 1e-9;
 
+using scale::frictionChange;
 using scale::kMaxStrips;
 using scale::part;
 
@@ -39,20 +40,6 @@ inline void applyRow(ScaleSolver::Motion* m, const ScaleSolver::Row& r, double d
     b.velocity += b.invMass * p;
     b.angularVelocity -= b.radius * dt * b.invInertia;
   }
-}
-
-// The change of a row's accumulated friction impulse that cancels the
-// tangential relative velocity gt, clamped so that |lambdaT| <= mu lambdaN
-// (no bound for mu = infinity, no-slip); the row keeps the new total.
-inline double frictionChange(ScaleSolver::Row& r, double gt) {
-  double lt = r.lambdaT - gt * r.massT;
-  if (!std::isinf(r.friction)) {
-    const double bound = r.friction * r.lambdaN;
-    lt = std::clamp(lt, -bound, bound);
-  }
-  const double dt = lt - r.lambdaT;
-  r.lambdaT = lt;
-  return dt;
 }
 
 // A row's two updates in their order: the friction, then the normal impulse

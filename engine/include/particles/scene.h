@@ -157,13 +157,16 @@ struct SolverSettings {
   // row that pushed. No over-relaxation, support sweep, settle iteration or
   // overlap removal: the impulses carry a pile's weight, so friction has its
   // true bound and momentum changes only by the forces and the walls.
-  // Measured on the 100,000 pile (8 substeps, 120 Hz, two threads): at rest
-  // from step 3,474, where the rigid step keeps 49 kJ at step 3,600 and
-  // Box2D 2.4.1 637 kJ; largest / mean overlap 7.71 % / 0.80 % (rigid:
-  // 5.73 % / 0.15 %); 0.78 M disk-steps/s (rigid: 2.5-3.2 M). At 10,000: at
-  // rest from step 600 (rigid: 557), 2.36 % / 0.28 %. Not exact for an
-  // isolated impact (the spring is soft), but momentum, the Coulomb bound
-  // and the bounce (-e times the approach the bodies brought) hold.
+  // Measured on the 100,000 pile over 3,600 steps (two threads, springs at
+  // a quarter of the substep rate): with 16 substeps at rest from step 1,883, with
+  // 2.08 % / 0.21 % largest / mean overlap; with 8, from step 3,474, with
+  // 7.71 % / 0.80 %; the rigid step keeps 49 kJ at step 3,600 (5.73 % /
+  // 0.15 %) and Box2D 2.4.1 637 kJ. At 10,000, 16 substeps: at rest from
+  // step 431 (rigid: 557), 0.61 % / 0.07 %. The price is speed: 16
+  // substeps ran at 0.45 / 0.88 M disk-steps/s at 10,000 and 0.30 / 0.66 M
+  // at 100,000 on one / two threads, a quarter to a fifth of the rigid step. Not exact for an
+  // isolated impact (the spring is soft), but momentum, the Coulomb bound and the bounce (-e times
+  // the approach the bodies brought) hold.
   int scaleSubsteps = 0;
   // Hz: the stiffness of the soft step's ball-ball contact spring, as the
   // frequency of a ball pair's oscillation on it; walls get twice this. At
