@@ -140,14 +140,22 @@ inline void solveRow(ScaleSolver::Motion* m, ScaleSolver::Row& r, double relax) 
 // 0) and needed a normal impulse to do so: raises the normal relative
 // velocity to the bounce, with the accumulated impulse kept >= 0. Touching
 // rows already have their bounce in their target.
-inline void restituteRow(ScaleSolver::Motion* m, ScaleSolver::Row& r, double bounce) {
-  if (bounce <= 0.0 || r.lambdaN <= 0.0) return;
+// Raises a row's normal relative velocity to `bounce` with its accumulated
+// normal impulse kept >= 0; returns the change of that impulse. Unguarded:
+// the rigid step (restituteRow) and the soft step decide which rows bounce.
+inline double raiseNormalTo(ScaleSolver::Motion* m, ScaleSolver::Row& r, double bounce) {
   const Vec2 vb = r.b >= 0 ? m[r.b].velocity : Vec2::Zero();
   const double gn = (vb - m[r.a].velocity).dot(r.normal());
   const double ln = std::max(0.0, r.lambdaN + (bounce - gn) * r.massN);
   const double dn = ln - r.lambdaN;
   r.lambdaN = ln;
   if (dn != 0.0) applyRow(m, r, dn, 0.0);
+  return dn;
+}
+
+inline void restituteRow(ScaleSolver::Motion* m, ScaleSolver::Row& r, double bounce) {
+  if (bounce <= 0.0 || r.lambdaN <= 0.0) return;
+  raiseNormalTo(m, r, bounce);
 }
 
 // The support sweep's slope: ball pairs whose normal is at least this far
@@ -582,6 +590,7 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
       mv[slot] = Moved{};
       if (forced) m[slot].velocity -= forceOf(k);
     }
+    pool.sync();  // the rows read every ball's move, and other threads' rows touch these balls
     const auto softRow = [&]<bool kSpring>(std::size_t k) {
       Row& r = rows_[k];
       Motion* other = r.b >= 0 ? &m[r.b] : nullptr;
@@ -590,11 +599,14 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
       scale::softRow<kSpring>(m[r.a], other, r, gap, softStep);
     };
     for (int u = 0; u < substeps; ++u) {
-      pool.sync();
-      if (forced)
+      // Barriers around the forces only where there are forces: without
+      // them the loop writes nothing.
+      if (forced) {
+        pool.sync();
         for (std::size_t k = b; k < e; ++k)
           m[static_cast<std::size_t>(slotOf_[k])].velocity += share * forceOf(k);
-      pool.sync();
+        pool.sync();
+      }
       byStrip(t, phase, [&](std::size_t k) {
         const Row& r = rows_[k];
         if (r.lambdaN != 0.0 || r.lambdaT != 0.0) applyRow(m, r, r.lambdaN, r.lambdaT);
@@ -623,13 +635,7 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
       Row& r = rows_[k];
       const double bounce = bounce_[k] > 0.0 ? bounce_[k] : std::max(0.0, r.target);
       if (bounce <= 0.0 || totalN_[k] <= 0.0) return;
-      const Vec2 vb = r.b >= 0 ? m[r.b].velocity : Vec2::Zero();
-      const double gn = (vb - m[r.a].velocity).dot(r.normal());
-      const double ln = std::max(0.0, r.lambdaN + (bounce - gn) * r.massN);
-      const double dn = ln - r.lambdaN;
-      r.lambdaN = ln;
-      totalN_[k] += dn;
-      if (dn != 0.0) applyRow(m, r, dn, 0.0);
+      totalN_[k] += raiseNormalTo(m, r, bounce);
     });
     pool.sync();
     // The balls took their substeps' moves; one that moved past the rows'
