@@ -42,6 +42,11 @@ inline void applyRow(ScaleSolver::Motion* m, const ScaleSolver::Row& r, double d
   }
 }
 
+// The warm start of a row: its accumulated impulses, applied again.
+inline void warmStartRow(ScaleSolver::Motion* m, const ScaleSolver::Row& r) {
+  if (r.lambdaN != 0.0 || r.lambdaT != 0.0) applyRow(m, r, r.lambdaN, r.lambdaT);
+}
+
 // A row's two updates in their order: the friction, then the normal impulse
 // over-relaxed by `relax`; in the last iteration (kLast) the plain normal
 // impulse first (solveBallRow says why).
@@ -136,10 +141,6 @@ inline void solveRow(ScaleSolver::Motion* m, ScaleSolver::Row& r, double relax) 
     solveWallRow<kLast>(m[r.a], r, relax);
 }
 
-// The restitution pass for a speculative row that closed its gap (bounce >
-// 0) and needed a normal impulse to do so: raises the normal relative
-// velocity to the bounce, with the accumulated impulse kept >= 0. Touching
-// rows already have their bounce in their target.
 // Raises a row's normal relative velocity to `bounce` with its accumulated
 // normal impulse kept >= 0; returns the change of that impulse. Unguarded:
 // the rigid step (restituteRow) and the soft step decide which rows bounce.
@@ -153,6 +154,10 @@ inline double raiseNormalTo(ScaleSolver::Motion* m, ScaleSolver::Row& r, double 
   return dn;
 }
 
+// The restitution pass for a speculative row that closed its gap (bounce >
+// 0) and needed a normal impulse to do so: raises the normal relative
+// velocity to the bounce. Touching rows already have their bounce in their
+// target.
 inline void restituteRow(ScaleSolver::Motion* m, ScaleSolver::Row& r, double bounce) {
   if (bounce <= 0.0 || r.lambdaN <= 0.0) return;
   raiseNormalTo(m, r, bounce);
@@ -324,29 +329,41 @@ inline bool moveGuarded(ScaleSolver::CellBall& ball, ScaleSolver::Motion& m, con
 // more than their lower partners: the pair's centre shifted sideways on every
 // pass, and shallow piles crept for ever instead of coming to rest
 // (docs/scale.md, "Shock propagation").
+// How deep a pair's balls, or its ball and wall, overlap now (m; 0 when
+// apart, or the wall's hit overlap). `hit` gets a wall's contact, `dist`
+// the distance of two balls' centres when they touch. Balls are numbered in
+// cell order.
+inline double overlapOf(const ScaleSolver::CellBall* ball, const ScaleBodies& s,
+                        const ScaleSolver::Pair& r, WallHit& hit, double& dist) {
+  const Vec2& xa = ball[r.a].position;
+  if (r.b < 0)
+    return touchWall(xa, r.reach, s.walls[static_cast<std::size_t>(-1 - r.b)], hit) ? hit.overlap
+                                                                                    : 0.0;
+  const double dist2 = (ball[r.b].position - xa).squaredNorm();
+  // Apart (most speculative rows): no square root. An overlap of 0 changes
+  // neither the deepest overlap seen nor what is moved.
+  if (dist2 >= r.reach * r.reach) return 0.0;
+  dist = std::sqrt(dist2);
+  return r.reach - dist;
+}
+
 // Returns the overlap found (m, <= 0 when apart). Balls are numbered in
 // cell order: `ball` holds their positions, `invMass` their inverse masses.
 inline double projectRow(ScaleSolver::CellBall* ball, const double* invMass, const ScaleBodies& s,
                          const ScaleSolver::Pair& r, double shock) {
+  WallHit hit;
+  double dist = 0.0;
+  const double overlap = overlapOf(ball, s, r, hit, dist);
+  if (overlap <= kOverlapTolerance * r.reach) return overlap;
   const int a = r.a;
   Vec2& xa = ball[a].position;
   if (r.b < 0) {
-    WallHit hit;
-    if (!touchWall(xa, r.reach, s.walls[static_cast<std::size_t>(-1 - r.b)], hit)) return 0.0;
-    if (hit.overlap <= kOverlapTolerance * r.reach) return hit.overlap;
-    xa -= hit.overlap * hit.normal;
-    return hit.overlap;
+    xa -= overlap * hit.normal;
+    return overlap;
   }
   const int b = r.b;
   Vec2& xb = ball[b].position;
   const Vec2 d = xb - xa;
-  const double dist2 = d.squaredNorm();
-  // Apart (most speculative rows): no square root. Nothing moves, and an
-  // overlap <= 0 changes neither the deepest overlap seen nor the flags.
-  if (dist2 >= r.reach * r.reach) return 0.0;
-  const double dist = std::sqrt(dist2);
-  const double overlap = r.reach - dist;
-  if (overlap <= kOverlapTolerance * r.reach) return overlap;
   const Vec2 n = dist > 0.0 ? Vec2(d / dist) : Vec2(1.0, 0.0);
   const double wa = invMass[a], wb = invMass[b];
   if (shock > 0.0) {
@@ -602,15 +619,12 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
       // Barriers around the forces only where there are forces: without
       // them the loop writes nothing.
       if (forced) {
-        pool.sync();
+        if (u > 0) pool.sync();  // the first substep follows the barrier above
         for (std::size_t k = b; k < e; ++k)
           m[static_cast<std::size_t>(slotOf_[k])].velocity += share * forceOf(k);
         pool.sync();
       }
-      byStrip(t, phase, [&](std::size_t k) {
-        const Row& r = rows_[k];
-        if (r.lambdaN != 0.0 || r.lambdaT != 0.0) applyRow(m, r, r.lambdaN, r.lambdaT);
-      });
+      byStrip(t, phase, [&](std::size_t k) { warmStartRow(m, rows_[k]); });
       byStrip(t, phase, [&](std::size_t k) { softRow.template operator()<true>(k); });
       pool.sync();
       for (std::size_t k = b; k < e; ++k) {
@@ -660,16 +674,9 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
     double& deepest = seen[static_cast<std::size_t>(t)].deepest;
     const auto [rb, re] = part(pairs_.size(), t, threads);
     for (std::size_t k = rb; k < re; ++k) {
-      const Pair& p = pairs_[k];
-      if (p.b < 0) {
-        WallHit hit;
-        if (touchWall(ball[p.a].position, p.reach, s.walls[static_cast<std::size_t>(-1 - p.b)],
-                      hit))
-          deepest = std::max(deepest, hit.overlap);
-      } else {
-        const double dist = (ball[p.b].position - ball[p.a].position).norm();
-        deepest = std::max(deepest, p.reach - dist);
-      }
+      WallHit hit;
+      double dist = 0.0;
+      deepest = std::max(deepest, overlapOf(ball, s, pairs_[k], hit, dist));
     }
   };
   pool.run([&](int t) {
@@ -686,10 +693,8 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
       const auto velocityPass = [&](Pass pass, int phase, int band, int parity) {
         switch (pass) {
           case Pass::WarmStart:
-            return onePhase(t, phase, band, parity, [&](std::size_t k) {
-              Row& r = rows_[k];
-              if (r.lambdaN != 0.0 || r.lambdaT != 0.0) applyRow(m, r, r.lambdaN, r.lambdaT);
-            });
+            return onePhase(t, phase, band, parity,
+                            [&](std::size_t k) { warmStartRow(m, rows_[k]); });
           case Pass::Relaxed:
             return onePhase(t, phase, band, parity,
                             [&](std::size_t k) { solveRow<false>(m, rows_[k], relax); });
