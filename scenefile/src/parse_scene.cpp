@@ -63,7 +63,7 @@ SceneDef parseScene(std::string_view text, const std::string& fileName) {
     checkDuration(scene.duration, where(*duration));
   }
   checkStepCount(scene.duration, scene.dt, fileName + ": duration");
-  if (auto s = root.optional("solver")) scene.solver = scenefile::readSolver(*s);
+  if (auto s = root.optional("solver")) scene.solver = scenefile::readSolver(*s, scene.dt);
 
   scenefile::checkInitialOverlaps(scene, wallNames, fileName);
   return scene;

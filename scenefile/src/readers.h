@@ -18,6 +18,7 @@ std::vector<WallDef> readBox(const Node& node);
 // `ballCount` bounds the force's ball index.
 ForceDef readForce(const Node& node, std::size_t ballCount);
 ContactMaterial readContact(const Node& node);
-SolverSettings readSolver(const Node& node);
+// `dt` (s), the scene's step, bounds the soft step's contact spring.
+SolverSettings readSolver(const Node& node, double dt);
 
 }  // namespace particles::scenefile

@@ -1,5 +1,6 @@
 #include "particles/scene_writer.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace particles {
@@ -62,6 +63,19 @@ nlohmann::json sceneJson(const SceneDef& s) {
                  {"grid_threshold", s.solver.gridThreshold},
                  {"swept_walls", s.solver.sweptWalls},
                  {"swept_balls", s.solver.sweptBalls}};
+  // The soft step's keys only with substeps: the loader refuses its spring's
+  // keys without them.
+  if (s.solver.scaleSubsteps > 0) {
+    nlohmann::json& solver = j["solver"];
+    solver["soft_substeps"] = s.solver.scaleSubsteps;
+    // The engine clamps the spring to a quarter of the substep rate and the
+    // loader refuses more: written clamped, it runs the same.
+    const double most = 0.25 / (s.dt / s.solver.scaleSubsteps);
+    if (s.solver.scaleContactHertz > 0.0)
+      solver["soft_contact_hertz"] = std::min(s.solver.scaleContactHertz, most);
+    solver["soft_contact_damping_ratio"] = s.solver.scaleContactDampingRatio;
+    solver["soft_contact_push_speed"] = s.solver.scaleContactPushSpeed;
+  }
   return j;
 }
 

@@ -351,6 +351,39 @@ TEST_F(Rejection, SweptBallsNotBoolean) {
                  "must be true or false, got null");
 }
 
+TEST_F(Rejection, SoftSubstepsOutOfRange) {
+  expectRejected(withBall(R"("solver": {"soft_substeps": 1001})"), "solver.soft_substeps",
+                 "must be an integer in [0, 1000], got 1001");
+  expectRejected(withBall(R"("solver": {"soft_substeps": -1})"), "solver.soft_substeps",
+                 "must be an integer in [0, 1000], got -1");
+}
+
+// Without substeps the rigid step runs: a spring key would do nothing.
+TEST_F(Rejection, SoftSpringWithoutSubsteps) {
+  expectRejected(withBall(R"("solver": {"soft_contact_hertz": 30})"), "solver.soft_contact_hertz",
+                 "needs \"soft_substeps\" >= 1");
+  expectRejected(withBall(R"("solver": {"soft_substeps": 0, "soft_contact_push_speed": 1})"),
+                 "solver.soft_contact_push_speed", "needs \"soft_substeps\" >= 1");
+}
+
+// 4 substeps of 0.01 s: a substep rate of 400 Hz, a spring of at most 100 Hz.
+TEST_F(Rejection, SoftSpringAboveAQuarterOfTheSubstepRate) {
+  expectRejected(
+      withBall(R"("dt": 0.01, "solver": {"soft_substeps": 4, "soft_contact_hertz": 150})"),
+      "solver.soft_contact_hertz",
+      "must be at most a quarter of the substep rate, 100 Hz with 4 substeps of dt 0.01 s, got "
+      "150");
+}
+
+TEST_F(Rejection, SoftSpringValues) {
+  expectRejected(withBall(R"("solver": {"soft_substeps": 4, "soft_contact_hertz": 0})"),
+                 "solver.soft_contact_hertz", "must be > 0, got 0");
+  expectRejected(withBall(R"("solver": {"soft_substeps": 4, "soft_contact_damping_ratio": -1})"),
+                 "solver.soft_contact_damping_ratio", "must be >= 0, got -1");
+  expectRejected(withBall(R"("solver": {"soft_substeps": 4, "soft_contact_push_speed": 0})"),
+                 "solver.soft_contact_push_speed", "must be > 0, got 0");
+}
+
 TEST_F(Rejection, DensityGivesInfiniteMass) {
   expectRejected(R"({"balls": [{"position": [0, 0], "radius": 1e200, "density": 1e200}]})",
                  "balls[0].density", "gives mass = density * pi * r^2 = inf");

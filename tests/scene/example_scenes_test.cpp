@@ -4,9 +4,12 @@
 
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <numbers>
 
 #include "cli_support.h"
 #include "particles/scenefile.h"
+#include "particles/state_hash.h"
+#include "particles/world.h"
 
 namespace particles::test {
 namespace {
@@ -62,7 +65,7 @@ TEST(ExampleScenes, TheListedOnesExist) {
   for (const char* name :
        {"oblique_floor_hit", "free_flight", "projectile", "head_on_spinning", "gears",
         "ball_in_box", "newtons_cradle", "pull_drag", "constant_force_torque", "rolling_disk",
-        "density_and_inertia", "no_slip_walls", "small_pile"})
+        "density_and_inertia", "no_slip_walls", "small_pile", "small_pile_soft"})
     EXPECT_TRUE(std::filesystem::exists(sceneFile(std::string(name) + ".json"))) << name;
 }
 
@@ -196,6 +199,68 @@ TEST(HandChecked, SmallPileComesToRestInsideTheBox) {
       EXPECT_GT(gap, -1e-6 * std::min(r, rj)) << i << " " << j;
     }
   }
+}
+
+// The soft step's scene is small_pile.json with "solver": {"soft_substeps":
+// 8}: the key reaches the engine (the same bits as setting
+// SolverSettings::scaleSubsteps), and it changes the run.
+TEST(HandChecked, SoftPileIsTheSmallPileWithSubsteps) {
+  SceneDef rigid = loadScene(sceneFile("small_pile.json"));
+  const SceneDef soft = loadScene(sceneFile("small_pile_soft.json"));
+  ASSERT_EQ(soft.solver.scaleSubsteps, 8);
+  ASSERT_EQ(rigid.solver.scaleSubsteps, 0);
+  constexpr long long kSteps = 300;
+  World rigidWorld(rigid);
+  rigidWorld.run(kSteps);
+  rigid.solver.scaleSubsteps = 8;
+  World asSoft(rigid), softWorld(soft);
+  asSoft.run(kSteps);
+  softWorld.run(kSteps);
+  EXPECT_EQ(stateHash(softWorld), stateHash(asSoft));
+  EXPECT_NE(stateHash(softWorld), stateHash(rigidWorld));
+}
+
+// On the soft step the pile ends at rest inside the box, and overlapping:
+// its springs carry the weight. At rest a spring's force is k x with k =
+// m_n w^2 (the damping acts on velocity only; docs/scale.md, "The soft
+// step"), so no overlap exceeds the whole pile's weight on one spring of
+// the lightest pair, M g / (m_n w^2), with w = 2 pi (a quarter of the
+// substep rate) and m_n half the lightest mass (walls are twice as stiff
+// for a whole mass: a quarter of that). And the springs do carry it: some
+// pair overlaps by more than one ball's weight needs, m g / (m_n w^2) for
+// the lightest (3.1e-6 m here; the bound above is 1.9e-4 m, and the deepest
+// was 4.0e-5 m when this was written), where the rigid step's overlap
+// removal leaves at most 1e-6 of the radius (2.3e-7 m).
+TEST(HandChecked, SoftPileComesToRestOnItsSprings) {
+  const SceneDef scene = loadScene(sceneFile("small_pile_soft.json"));
+  const nlohmann::json balls = runScene("small_pile_soft.json")["balls"];
+  ASSERT_EQ(balls.size(), scene.balls.size());
+  double total = 0.0, lightest = INFINITY;
+  for (const BallDef& b : scene.balls) {
+    total += b.mass;
+    lightest = std::min(lightest, b.mass);
+  }
+  const double g = scene.gravity.norm();
+  const double w = 2.0 * std::numbers::pi * 0.25 * scene.solver.scaleSubsteps / scene.dt;
+  const double mostSag = total * g / (0.5 * lightest * w * w);
+  const double oneWeight = lightest * g / (0.5 * lightest * w * w);
+  double deepest = 0.0;
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    const double r = scene.balls[i].radius;
+    const Vec2 x = vec(balls[i]["position"]);
+    EXPECT_LT(vec(balls[i]["velocity"]).norm(), 0.01) << i;
+    EXPECT_LT(std::abs(balls[i]["angular_velocity"].get<double>()) * r, 0.01) << i;
+    EXPECT_GE(x.x() - r, -mostSag) << i;
+    EXPECT_GE(x.y() - r, -mostSag) << i;
+    EXPECT_LE(x.x() + r, 5.6 + mostSag) << i;
+    EXPECT_LE(x.y() + r, 6.0 + mostSag) << i;
+    for (std::size_t j = i + 1; j < balls.size(); ++j) {
+      const double overlap = scene.balls[j].radius + r - (vec(balls[j]["position"]) - x).norm();
+      EXPECT_LE(overlap, mostSag) << i << " " << j;
+      deepest = std::max(deepest, overlap);
+    }
+  }
+  EXPECT_GT(deepest, oneWeight);
 }
 
 }  // namespace

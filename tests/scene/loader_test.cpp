@@ -83,6 +83,27 @@ TEST(Loader, EveryTopLevelKeyRead) {
   EXPECT_TRUE(s.solver.sweptBalls);
 }
 
+TEST(Loader, SoftStepKeys) {
+  const SceneDef s = parse(R"({"balls": [{"position": [0, 0], "radius": 0.5, "mass": 1}],
+    "dt": 0.01, "solver": {"soft_substeps": 4, "soft_contact_hertz": 100,
+                           "soft_contact_damping_ratio": 0, "soft_contact_push_speed": 0.5}})");
+  EXPECT_EQ(s.solver.scaleSubsteps, 4);
+  EXPECT_EQ(s.solver.scaleContactHertz, 100.0);  // exactly the bound: a quarter of 400 Hz
+  EXPECT_EQ(s.solver.scaleContactDampingRatio, 0.0);
+  EXPECT_EQ(s.solver.scaleContactPushSpeed, 0.5);
+}
+
+TEST(Loader, SoftStepOffByDefault) {
+  const SceneDef s = parse(R"({"balls": [{"position": [0, 0], "radius": 0.5, "mass": 1}],
+    "solver": {"soft_substeps": 2}})");
+  const SolverSettings defaults;
+  EXPECT_EQ(defaults.scaleSubsteps, 0);
+  EXPECT_EQ(s.solver.scaleSubsteps, 2);
+  EXPECT_EQ(s.solver.scaleContactHertz, defaults.scaleContactHertz);
+  EXPECT_EQ(s.solver.scaleContactDampingRatio, defaults.scaleContactDampingRatio);
+  EXPECT_EQ(s.solver.scaleContactPushSpeed, defaults.scaleContactPushSpeed);
+}
+
 TEST(Loader, DensityGivesMass) {
   const SceneDef s = parse(R"({"balls": [{"position": [0, 0], "radius": 0.5, "density": 2}]})");
   EXPECT_DOUBLE_EQ(s.balls[0].mass, 2.0 * std::numbers::pi * 0.25);

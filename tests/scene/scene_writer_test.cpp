@@ -90,6 +90,31 @@ TEST(SceneWriter, RoundTripsEveryField) {
   EXPECT_EQ(r.solver.gridThreshold, 0);
   EXPECT_TRUE(r.solver.sweptWalls);
   EXPECT_TRUE(r.solver.sweptBalls);
+  EXPECT_EQ(r.solver.scaleSubsteps, 0);  // the rigid step: no soft keys written
+}
+
+TEST(SceneWriter, RoundTripsTheSoftStep) {
+  SceneDef s;
+  s.balls = {BallDef{}};
+  s.dt = 0.01;
+  s.solver.scaleSubsteps = 4;
+  s.solver.scaleContactDampingRatio = 2.5;
+  s.solver.scaleContactPushSpeed = 0.75;
+  // 0: the engine's own spring, a quarter of the substep rate; not written.
+  SceneDef r = parseScene(sceneText(s), "written.json");
+  EXPECT_EQ(r.solver.scaleSubsteps, 4);
+  EXPECT_EQ(r.solver.scaleContactHertz, 0.0);
+  EXPECT_EQ(r.solver.scaleContactDampingRatio, 2.5);
+  EXPECT_EQ(r.solver.scaleContactPushSpeed, 0.75);
+
+  s.solver.scaleContactHertz = 30.0;
+  r = parseScene(sceneText(s), "written.json");
+  EXPECT_EQ(r.solver.scaleContactHertz, 30.0);
+  // Above the bound (100 Hz here) the engine clamps to it; so does the writer,
+  // or the loader would refuse what it wrote.
+  s.solver.scaleContactHertz = 500.0;
+  r = parseScene(sceneText(s), "written.json");
+  EXPECT_EQ(r.solver.scaleContactHertz, 0.25 / (0.01 / 4));
 }
 
 }  // namespace
