@@ -282,8 +282,9 @@ void addScaleBenchOptions(CLI::App& bench, ScaleBenchOptions& o) {
                  "Engine without the settle iteration once a pile has settled "
                  "(SolverSettings::scaleSettleIteration, on by default)");
   bench.add_flag("--no-wavefront", o.noWavefront,
-                 "Engine with its velocity passes one after another instead of as a wavefront "
-                 "over the bands (SolverSettings::scaleWavefront; the same bits)");
+                 "Engine with its velocity passes (the soft step's: each substep's passes) one "
+                 "after another instead of as a wavefront over the bands "
+                 "(SolverSettings::scaleWavefront; the same bits)");
   bench
       .add_option("--substeps", o.substeps,
                   "Engine with the soft step on the large-scene path, S substeps a step, 1 to 64 "

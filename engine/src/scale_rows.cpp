@@ -451,6 +451,7 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool, int fastCells
   bandReach_ = band > 0 ? (std::max(1, fast) + band - 1) / band + (fast + band - 1) / band : 1;
   stripOf_.resize(n);
   slotOf_.resize(n);
+  if (soft) blockOfSlot_.resize(n);
   slotCount_.assign(static_cast<std::size_t>(threads) * stride, 0);
   lastOf_.resize(n);
   motion_.resize(n);
@@ -511,8 +512,20 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool, int fastCells
       // two of them.
       body[slot] = {s.velocity[i], s.angularVelocity[i], s.invMass[i], s.invInertia[i],
                     s.radius[i]};
+      if (soft)
+        blockOfSlot_[static_cast<std::size_t>(slot)] = static_cast<int>(blockOf(stripOf_[k], k));
     }
     pool.sync();
+    // The soft step's ball passes go block by block, as the rows do. A
+    // strip's balls lie bottom-up in motion_, the strips one after another,
+    // so the blocks' numbers never fall from one slot to the next.
+    if (soft && t == 0) {
+      ballBlockStart_.assign(blocks + 1, static_cast<int>(n));
+      for (std::size_t slot = n; slot-- > 0;)
+        ballBlockStart_[static_cast<std::size_t>(blockOfSlot_[slot])] = static_cast<int>(slot);
+      for (std::size_t j = blocks; j-- > 0;)
+        ballBlockStart_[j] = std::min(ballBlockStart_[j], ballBlockStart_[j + 1]);
+    }
     if (fast > 0) findFastReach(s, grid, fast, t, pool);
     bool mixOnce = true, forces = false;
     for (const Same& u : same) {

@@ -402,6 +402,8 @@ std::size_t ScaleSolver::memoryBytes() const {
       sizeof(double) * (separation_.capacity() + totalN_.capacity() + totalT_.capacity()) +
       sizeof(Moved) * moved_.capacity() + sizeof(Motion) * motion_.capacity() +
       sizeof(int) * (blockStart_.capacity() + blockCount_.capacity()) +
+      sizeof(int) * (ballBlockStart_.capacity() + blockOfSlot_.capacity()) +
+      sizeof(Vec2) * forceShare_.capacity() +
       sizeof(int) * (lastStart_.capacity() + lastOther_.capacity() + lastOf_.capacity()) +
       sizeof(int) * stripOf_.capacity() + sizeof(int) * slot_.capacity() +
       sizeof(int) * (slotOf_.capacity() + slotCount_.capacity()) +
@@ -502,7 +504,9 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
   // for the prefetchers), but whole-step A/B pairs were within the host's
   // noise; at N = 10,000 (7 strips) nothing changes. Same bits either way.
   // One phase: the rows of one band and parity.
-  auto onePhase = [&](int t, int phase, int band, int parity, auto&& f) {
+  // `starts` is blockStart_ for the rows; the soft step's ball passes take
+  // its balls block by block in the same way (ballBlockStart_).
+  auto phaseOver = [&](const int* starts, int t, int phase, int band, int parity, auto&& f) {
     std::array<std::size_t, kMaxStrips> from{}, to{};
     int inner = 0;
     for (int st = parity; st < strips; st += 2) {
@@ -510,8 +514,8 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
       if (owner[i] != t) continue;
       const std::size_t block =
           i * static_cast<std::size_t>(bands) + static_cast<std::size_t>(band);
-      const auto b = static_cast<std::size_t>(blockStart_[block]);
-      const auto e = static_cast<std::size_t>(blockStart_[block + 1]);
+      const auto b = static_cast<std::size_t>(starts[block]);
+      const auto e = static_cast<std::size_t>(starts[block + 1]);
       if (left[i] < 0 && right[i] < 0) {
         if (b < e) {
           from[static_cast<std::size_t>(inner)] = b;
@@ -549,6 +553,9 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
       }
     }
   };
+  auto onePhase = [&](int t, int phase, int band, int parity, auto&& f) {
+    phaseOver(blockStart_.data(), t, phase, band, parity, f);
+  };
   auto byStrip = [&](int t, int& phase, auto&& f) {
     for (int band = 0; band < bands; ++band)
       for (int parity = 0; parity < 2; ++parity, ++phase) onePhase(t, phase, band, parity, f);
@@ -572,10 +579,15 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
   int* movedIn = movedIn_.data();
 
   // The soft step (SolverSettings::scaleSubsteps; docs/scale.md, "The soft
-  // step"). Thread t moves, and adds the forces to, its own range [b, e) of
-  // balls in cell order; a barrier before and after each such loop, since
-  // the rows of other threads touch those balls.
+  // step"). Its passes over balls (the forces' share, the move) go strip by
+  // strip and band by band like its passes over rows, each thread on its own
+  // strips' balls, so that every pass takes part in the wavefront.
   scale::SoftStep softStep;
+  // Its passes in order: per substep the forces' share (balls), the warm
+  // start (rows), the spring (rows), the move (balls), the relax (rows);
+  // then the bounce (rows).
+  enum class SoftPass { Forces, WarmStart, Spring, Move, Relax, Bounce };
+  std::vector<SoftPass> softPassList;
   if (soft) {
     softStep.h = s.dt / substeps;
     // At most a quarter of the substep rate, Box2D v3's bound for its soft
@@ -591,21 +603,31 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
     softStep.walls = scale::contactSpring(std::min(2.0 * hertz, 2.0 * most), zeta, softStep.h);
     softStep.pushSpeed = std::max(0.0, settings.scaleContactPushSpeed);
     moved_.resize(motion_.size());
+    if (!s.forcedVelocity.empty()) forceShare_.resize(motion_.size());
+    for (int u = 0; u < substeps; ++u) {
+      if (!s.forcedVelocity.empty()) softPassList.push_back(SoftPass::Forces);
+      softPassList.insert(softPassList.end(),
+                          {SoftPass::WarmStart, SoftPass::Spring, SoftPass::Move, SoftPass::Relax});
+    }
+    softPassList.push_back(SoftPass::Bounce);
     totalN_.assign(rows_.size(), 0.0);
     totalT_.assign(rows_.size(), 0.0);
   }
   const auto softPasses = [&](int t, std::size_t b, std::size_t e, int& phase) {
     Moved* mv = moved_.data();
+    Vec2* force = forceShare_.data();
     const bool forced = !s.forcedVelocity.empty();
     const double share = 1.0 / substeps;
-    const auto forceOf = [&](std::size_t k) {
-      return s.forcedVelocity[static_cast<std::size_t>(ball[k].index)];
-    };
-    // The forces are added a substep's share at a time.
+    // The World added this step's forces whole; they are added again a
+    // substep's share at a time.
     for (std::size_t k = b; k < e; ++k) {
       const auto slot = static_cast<std::size_t>(slotOf_[k]);
       mv[slot] = Moved{};
-      if (forced) m[slot].velocity -= forceOf(k);
+      if (forced) {
+        const Vec2 f = s.forcedVelocity[static_cast<std::size_t>(ball[k].index)];
+        m[slot].velocity -= f;
+        force[slot] = share * f;
+      }
     }
     pool.sync();  // the rows read every ball's move, and other threads' rows touch these balls
     const auto softRow = [&]<bool kSpring>(std::size_t k) {
@@ -615,42 +637,69 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
       const double gap = separation_[k] + (movedB - mv[r.a].by).dot(r.normal());
       scale::softRow<kSpring>(m[r.a], other, r, gap, softStep);
     };
-    for (int u = 0; u < substeps; ++u) {
-      // Barriers around the forces only where there are forces: without
-      // them the loop writes nothing.
-      if (forced) {
-        if (u > 0) pool.sync();  // the first substep follows the barrier above
-        for (std::size_t k = b; k < e; ++k)
-          m[static_cast<std::size_t>(slotOf_[k])].velocity += share * forceOf(k);
-        pool.sync();
+    // Each pass, rows or balls, block by block like the rigid step's
+    // passes; a ball pass on a strip whose balls another thread's rows touch
+    // waits for that thread's earlier phases as a row pass does, so no pass
+    // needs a barrier.
+    const auto onePass = [&](SoftPass pass, int phase, int band, int parity) {
+      const int* balls = ballBlockStart_.data();
+      switch (pass) {
+        case SoftPass::Forces:
+          return phaseOver(balls, t, phase, band, parity,
+                           [&](std::size_t k) { m[k].velocity += force[k]; });
+        case SoftPass::WarmStart:
+          return onePhase(t, phase, band, parity,
+                          [&](std::size_t k) { warmStartRow(m, rows_[k]); });
+        case SoftPass::Spring:
+          return onePhase(t, phase, band, parity,
+                          [&](std::size_t k) { softRow.template operator()<true>(k); });
+        case SoftPass::Move:
+          return phaseOver(balls, t, phase, band, parity, [&](std::size_t k) {
+            mv[k].by += softStep.h * m[k].velocity;
+            mv[k].turned += softStep.h * m[k].angularVelocity;
+          });
+        case SoftPass::Relax:
+          // The spring's push taken out of the velocities; what each row
+          // gave in this substep is its impulse now (the warm start gave the
+          // last substep's, the updates the rest).
+          return onePhase(t, phase, band, parity, [&](std::size_t k) {
+            softRow.template operator()<false>(k);
+            totalN_[k] += rows_[k].lambdaN;
+            totalT_[k] += rows_[k].lambdaT;
+          });
+        case SoftPass::Bounce:
+          // -e times the approach the bodies brought into the step (the
+          // rigid step's target of a touching row, bounce_ of a speculative
+          // one), for the rows that pushed.
+          return onePhase(t, phase, band, parity, [&](std::size_t k) {
+            Row& r = rows_[k];
+            const double bounce = bounce_[k] > 0.0 ? bounce_[k] : std::max(0.0, r.target);
+            if (bounce <= 0.0 || totalN_[k] <= 0.0) return;
+            totalN_[k] += raiseNormalTo(m, r, bounce);
+          });
       }
-      byStrip(t, phase, [&](std::size_t k) { warmStartRow(m, rows_[k]); });
-      byStrip(t, phase, [&](std::size_t k) { softRow.template operator()<true>(k); });
-      pool.sync();
-      for (std::size_t k = b; k < e; ++k) {
-        const auto slot = static_cast<std::size_t>(slotOf_[k]);
-        mv[slot].by += softStep.h * m[slot].velocity;
-        mv[slot].turned += softStep.h * m[slot].angularVelocity;
-      }
-      pool.sync();
-      // Relax: the spring's push taken out of the velocities; what each row
-      // gave in this substep is its impulse now (the warm start gave the
-      // last substep's, the updates the rest).
-      byStrip(t, phase, [&](std::size_t k) {
-        softRow.template operator()<false>(k);
-        totalN_[k] += rows_[k].lambdaN;
-        totalT_[k] += rows_[k].lambdaT;
-      });
+    };
+    // Each substep's passes as a wavefront, as the rigid step's passes (its
+    // comment below): a ball and the rows that touch it lie at most
+    // bandReach_ bands apart, so a lag of bandReach_ between passes keeps
+    // every ball's operations in the order of whole passes, for the same
+    // bits. One front for all the step's passes would be as valid, but its
+    // passes would spread over the whole pile: at any moment they would
+    // touch bands bandReach_ apart up to lag x 5k, and a band would leave
+    // the cache between one pass and the next.
+    for (std::size_t from = 0; from < softPassList.size();) {
+      std::size_t to = from + 1;
+      while (to < softPassList.size() && softPassList[to] != softPassList[from]) ++to;
+      const int count = static_cast<int>(to - from);
+      for (int front = 0; front < bands + lag * (count - 1); ++front)
+        for (int p = 0; p < count; ++p) {
+          const int band = front - lag * p;
+          if (band < 0 || band >= bands) continue;
+          for (int parity = 0; parity < 2; ++parity, ++phase)
+            onePass(softPassList[from + static_cast<std::size_t>(p)], phase, band, parity);
+        }
+      from = to;
     }
-    // The bounce: -e times the approach the bodies brought into the step
-    // (the rigid step's target of a touching row, bounce_ of a speculative
-    // one), for the rows that pushed.
-    byStrip(t, phase, [&](std::size_t k) {
-      Row& r = rows_[k];
-      const double bounce = bounce_[k] > 0.0 ? bounce_[k] : std::max(0.0, r.target);
-      if (bounce <= 0.0 || totalN_[k] <= 0.0) return;
-      totalN_[k] += raiseNormalTo(m, r, bounce);
-    });
     pool.sync();
     // The balls took their substeps' moves; one that moved past the rows'
     // margin may have met a wall it has no row with, and is moved again

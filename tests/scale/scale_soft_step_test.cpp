@@ -130,7 +130,10 @@ TEST(SoftStep, AHeadOnImpactBouncesWithItsRestitution) {
   EXPECT_GT(s[1].position.x() - s[0].position.x(), 1.0);  // parted
 }
 
-std::uint64_t pileHash(int threads, int steps, bool poly, int substeps) {
+// bandRows >= 0: bands of that height at this size (the benchmark's
+// 100,000 pile has bands of 2 grid rows).
+std::uint64_t pileHash(int threads, int steps, bool poly, int substeps, int bandRows = -1,
+                       bool wavefront = true) {
   pile::PileParams p;
   p.count = 2500;
   p.polydisperse = poly;
@@ -138,6 +141,11 @@ std::uint64_t pileHash(int threads, int steps, bool poly, int substeps) {
   SceneDef scene = pile::makePile(p);
   scene.solver.scaleParallelFrom = 0;  // share the step among the threads at this size too
   scene.solver.scaleSubsteps = substeps;
+  if (bandRows >= 0) {
+    scene.solver.scaleBandRows = bandRows;
+    scene.solver.scaleBandsFrom = 0;
+  }
+  scene.solver.scaleWavefront = wavefront;
   World world(scene);
   EXPECT_TRUE(world.plan().scale);
   world.run(steps);
@@ -158,6 +166,18 @@ TEST(SoftStep, SameHashWithOneTwoAndThreeThreads) {
     }
     EXPECT_NE(pileHash(1, 120, poly, 0), one) << "poly " << poly;  // the setting is taken
   }
+}
+
+// In bands, each substep's passes over rows and balls run as a wavefront
+// (docs/scale.md, "The soft step's wavefront"): the same bits as the same
+// passes one after another, with one thread or two (whose ball passes wait
+// for each other's rows where their strips meet, with no barrier).
+TEST(SoftStep, WavefrontInBandsGivesTheBitsOfWholePasses) {
+  const std::uint64_t whole = pileHash(1, 120, false, 4, 2, false);
+  EXPECT_EQ(pileHash(1, 120, false, 4, 2, true), whole);
+  EXPECT_EQ(pileHash(2, 120, false, 4, 2, true), whole);
+  EXPECT_EQ(pileHash(2, 120, false, 4, 2, false), whole);
+  EXPECT_NE(pileHash(1, 120, false, 4, 0), whole);  // bands change the order: the setting is taken
 }
 
 // The benchmark's pile of `count` disks, with the soft step of 4 substeps.

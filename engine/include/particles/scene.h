@@ -166,7 +166,8 @@ struct SolverSettings {
   // substeps ran at 0.45 / 0.88 M disk-steps/s at 10,000 and 0.30 / 0.66 M
   // at 100,000 on one / two threads, a quarter to a fifth of the rigid step. Not exact for an
   // isolated impact (the spring is soft), but momentum, the Coulomb bound and the bounce (-e times
-  // the approach the bodies brought) hold.
+  // the approach the bodies brought) hold. Scene files: solver.soft_substeps and the
+  // soft_contact_* keys (docs/scene-format.md).
   int scaleSubsteps = 0;
   // Hz: the stiffness of the soft step's ball-ball contact spring, as the
   // frequency of a ball pair's oscillation on it; walls get twice this. At
@@ -281,6 +282,8 @@ struct SolverSettings {
   // further apart than the lag share no ball, so every ball sees its rows in
   // the same order and the result is the same to the bit; the bands a
   // wavefront works on stay in cache (docs/scale.md, "Passes as a
+  // wavefront"). The soft step (scaleSubsteps) runs each substep's passes,
+  // over rows and over balls, as a wavefront of its own ("The soft step's
   // wavefront"). Off only to test that claim and to time the wavefront
   // (bench --scale --no-wavefront).
   bool scaleWavefront = true;
