@@ -320,15 +320,6 @@ inline bool moveGuarded(ScaleSolver::CellBall& ball, ScaleSolver::Motion& m, con
   return hitAny;
 }
 
-// Moves a row's bodies apart by their whole overlap, shared by inverse mass
-// (a wall takes none): the small-scene projection of world.cpp, per row.
-// Under gravity with shock propagation (SolverSettings::scaleShockPropagation)
-// the part of the move along gravity is shared with the lower ball's weight
-// scaled by 1 - shock |n . down|; the part across gravity is still shared by
-// inverse mass. Scaling the whole move instead pushed upper balls sideways
-// more than their lower partners: the pair's centre shifted sideways on every
-// pass, and shallow piles crept for ever instead of coming to rest
-// (docs/scale.md, "Shock propagation").
 // How deep a pair's balls, or its ball and wall, overlap now (m; 0 when
 // apart, or the wall's hit overlap). `hit` gets a wall's contact, `dist`
 // the distance of two balls' centres when they touch. Balls are numbered in
@@ -347,6 +338,15 @@ inline double overlapOf(const ScaleSolver::CellBall* ball, const ScaleBodies& s,
   return r.reach - dist;
 }
 
+// Moves a row's bodies apart by their whole overlap, shared by inverse mass
+// (a wall takes none): the small-scene projection of world.cpp, per row.
+// Under gravity with shock propagation (SolverSettings::scaleShockPropagation)
+// the part of the move along gravity is shared with the lower ball's weight
+// scaled by 1 - shock |n . down|; the part across gravity is still shared by
+// inverse mass. Scaling the whole move instead pushed upper balls sideways
+// more than their lower partners: the pair's centre shifted sideways on every
+// pass, and shallow piles crept for ever instead of coming to rest
+// (docs/scale.md, "Shock propagation").
 // Returns the overlap found (m, <= 0 when apart). Balls are numbered in
 // cell order: `ball` holds their positions, `invMass` their inverse masses.
 inline double projectRow(ScaleSolver::CellBall* ball, const double* invMass, const ScaleBodies& s,
@@ -588,6 +588,7 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
   // then the bounce (rows).
   enum class SoftPass { Forces, WarmStart, Spring, Move, Relax, Bounce };
   std::vector<SoftPass> softPassList;
+  const bool forced = !s.forcedVelocity.empty();
   if (soft) {
     softStep.h = s.dt / substeps;
     // At most a quarter of the substep rate, Box2D v3's bound for its soft
@@ -595,7 +596,7 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
     // it: past the bound the 10,000 pile jitters instead of coming to rest,
     // docs/scale.md, "The soft step's bound"); walls, which carry the whole
     // pile, get twice the stiffness, as there.
-    const double most = 0.25 / softStep.h;
+    const double most = softContactHertzMost(s.dt, substeps);
     const double hertz = settings.scaleContactHertz > 0.0
                              ? std::clamp(settings.scaleContactHertz, 1e-3, most)
                              : most;
@@ -604,9 +605,9 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
     softStep.walls = scale::contactSpring(std::min(2.0 * hertz, 2.0 * most), zeta, softStep.h);
     softStep.pushSpeed = std::max(0.0, settings.scaleContactPushSpeed);
     moved_.resize(motion_.size());
-    if (!s.forcedVelocity.empty()) forceShare_.resize(motion_.size());
+    if (forced) forceShare_.resize(motion_.size());
     for (int u = 0; u < substeps; ++u) {
-      if (!s.forcedVelocity.empty()) softPassList.push_back(SoftPass::Forces);
+      if (forced) softPassList.push_back(SoftPass::Forces);
       softPassList.insert(softPassList.end(),
                           {SoftPass::WarmStart, SoftPass::Spring, SoftPass::Move, SoftPass::Relax});
     }
@@ -617,7 +618,6 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
   const auto softPasses = [&](int t, std::size_t b, std::size_t e, int& phase) {
     Moved* mv = moved_.data();
     Vec2* force = forceShare_.data();
-    const bool forced = !s.forcedVelocity.empty();
     const double share = 1.0 / substeps;
     // The World added this step's forces whole; they are added again a
     // substep's share at a time.

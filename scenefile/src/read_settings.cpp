@@ -49,8 +49,7 @@ void readSoftStep(const Node& node, double dt, SolverSettings& solver) {
   }
   if (auto hz = node.optional("soft_contact_hertz")) {
     solver.scaleContactHertz = readPositive(*hz);
-    // The engine's bound, computed as it does.
-    const double most = 0.25 / (dt / solver.scaleSubsteps);
+    const double most = softContactHertzMost(dt, solver.scaleSubsteps);
     if (solver.scaleContactHertz > most)
       hz->fail("must be at most a quarter of the substep rate, " + formatDouble(most) +
                " Hz with " + std::to_string(solver.scaleSubsteps) + " substeps of dt " +

@@ -70,7 +70,7 @@ nlohmann::json sceneJson(const SceneDef& s) {
     solver["soft_substeps"] = s.solver.scaleSubsteps;
     // The engine clamps the spring to a quarter of the substep rate and the
     // loader refuses more: written clamped, it runs the same.
-    const double most = 0.25 / (s.dt / s.solver.scaleSubsteps);
+    const double most = softContactHertzMost(s.dt, s.solver.scaleSubsteps);
     if (s.solver.scaleContactHertz > 0.0)
       solver["soft_contact_hertz"] = std::min(s.solver.scaleContactHertz, most);
     solver["soft_contact_damping_ratio"] = s.solver.scaleContactDampingRatio;

@@ -79,6 +79,14 @@ struct ForceDef {
   bool activeAt(double t) const { return t >= start && t < end; }
 };
 
+// Hz: the stiffest contact spring of the large-scene path's soft step for a
+// step of dt seconds in `substeps` substeps, a quarter of the substep rate
+// (SolverSettings::scaleContactHertz). The engine clamps to it, and scene
+// files refuse more.
+inline double softContactHertzMost(double dt, int substeps) {
+  return 0.25 / (dt / substeps);
+}
+
 // How the engine integrates and resolves contacts. Defaults suit most scenes.
 struct SolverSettings {
   // Upper bound on velocity passes over the contacts in one step; passes stop
