@@ -439,10 +439,17 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool, int fastCells
   const int bands = band > 0 ? (rows + band - 1) / band : 1;
   const std::size_t blocks = static_cast<std::size_t>(strips) * static_cast<std::size_t>(bands);
   const std::size_t blockStride = (blocks + 1 + 15) / 16 * 16;
+  // Each grid column's strip and each grid row's band, looked up per ball
+  // once (bandOf_) instead of two integer divisions per row found and made.
+  stripOfColumn_.resize(static_cast<std::size_t>(cols));
+  for (int x = 0; x < cols; ++x)
+    // Whole grid columns per strip: neighbours are at most one column apart.
+    stripOfColumn_[static_cast<std::size_t>(x)] = x * strips / cols;
+  bandOfRow_.resize(static_cast<std::size_t>(rows));
+  for (int y = 0; y < rows; ++y) bandOfRow_[static_cast<std::size_t>(y)] = band > 0 ? y / band : 0;
   const auto blockOf = [&](int strip, std::size_t a) {
-    const int j = band > 0 ? cellOf_[a] / cols / band : 0;
     return static_cast<std::size_t>(strip) * static_cast<std::size_t>(bands) +
-           static_cast<std::size_t>(j);
+           static_cast<std::size_t>(bandOf_[a]);
   };
   strips_ = strips;
   bands_ = bands;
@@ -450,14 +457,18 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool, int fastCells
   // pair's up to `fast` grid rows above or below (fastPartners).
   bandReach_ = band > 0 ? (std::max(1, fast) + band - 1) / band + (fast + band - 1) / band : 1;
   stripOf_.resize(n);
+  bandOf_.resize(n);
   slotOf_.resize(n);
-  if (soft) blockOfSlot_.resize(n);
   slotCount_.assign(static_cast<std::size_t>(threads) * stride, 0);
   lastOf_.resize(n);
   motion_.resize(n);
   invMass_.resize(n);
   blockCount_.assign(static_cast<std::size_t>(threads) * blockStride, 0);
   blockStart_.assign(blocks + 1, 0);
+  if (soft) {
+    ballBlockCount_.assign(static_cast<std::size_t>(threads) * blockStride, 0);
+    ballBlockStart_.assign(blocks + 1, 0);
+  }
   found_.resize(static_cast<std::size_t>(threads));
   linkStart_.assign(static_cast<std::size_t>(threads) + 1, 0);
   const CellBall* cells = cellBalls_.data();
@@ -490,19 +501,31 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool, int fastCells
       mine.forced = mine.forced && (!anyForces || s.forcedVelocity[i] == s.forcedVelocity[0]);
     }
     int* slots = slotCount_.data() + static_cast<std::size_t>(t) * stride;
+    int* ballsIn =
+        soft ? ballBlockCount_.data() + static_cast<std::size_t>(t) * blockStride : nullptr;
     for (std::size_t k = begin; k < end; ++k) {
       const std::size_t i = static_cast<std::size_t>(cells[k].index);
-      // Whole grid columns per strip: neighbours are at most one column apart.
-      stripOf_[k] = (cellOf_[k] % cols) * strips / cols;
+      const int cy = cellOf_[k] / cols;
+      stripOf_[k] = stripOfColumn_[static_cast<std::size_t>(cellOf_[k] - cy * cols)];
+      bandOf_[k] = bandOfRow_[static_cast<std::size_t>(cy)];
       ++slots[stripOf_[k]];
+      if (soft) ++ballsIn[blockOf(stripOf_[k], k)];
       invMass_[k] = s.invMass[i];
       lastOf_[k] = warm ? lastNumberOf_[i] : -1;
     }
     pool.sync();
     // Where each thread's balls of a strip go in motion_.
-    if (t == 0)
+    if (t == 0) {
       scale::placeByBucket(slotCount_.data(), stride, static_cast<std::size_t>(strips), threads,
                            nullptr);
+      // The soft step's ball passes go block by block, as the rows do. A
+      // strip's balls lie in motion_ thread by thread, each thread's in cell
+      // order, and cell order runs bottom-up: a strip's balls lie there band
+      // by band, and each block's balls are one run.
+      if (soft)
+        scale::placeByBucket(ballBlockCount_.data(), blockStride, blocks, threads,
+                             ballBlockStart_.data());
+    }
     pool.sync();
     for (std::size_t k = begin; k < end; ++k) {
       const std::size_t i = static_cast<std::size_t>(cells[k].index);
@@ -512,20 +535,8 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool, int fastCells
       // two of them.
       body[slot] = {s.velocity[i], s.angularVelocity[i], s.invMass[i], s.invInertia[i],
                     s.radius[i]};
-      if (soft)
-        blockOfSlot_[static_cast<std::size_t>(slot)] = static_cast<int>(blockOf(stripOf_[k], k));
     }
     pool.sync();
-    // The soft step's ball passes go block by block, as the rows do. A
-    // strip's balls lie bottom-up in motion_, the strips one after another,
-    // so the blocks' numbers never fall from one slot to the next.
-    if (soft && t == 0) {
-      ballBlockStart_.assign(blocks + 1, static_cast<int>(n));
-      for (std::size_t slot = n; slot-- > 0;)
-        ballBlockStart_[static_cast<std::size_t>(blockOfSlot_[slot])] = static_cast<int>(slot);
-      for (std::size_t j = blocks; j-- > 0;)
-        ballBlockStart_[j] = std::min(ballBlockStart_[j], ballBlockStart_[j + 1]);
-    }
     if (fast > 0) findFastReach(s, grid, fast, t, pool);
     bool mixOnce = true, forces = false;
     for (const Same& u : same) {

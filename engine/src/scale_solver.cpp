@@ -402,7 +402,8 @@ std::size_t ScaleSolver::memoryBytes() const {
       sizeof(double) * (separation_.capacity() + totalN_.capacity() + totalT_.capacity()) +
       sizeof(Moved) * moved_.capacity() + sizeof(Motion) * motion_.capacity() +
       sizeof(int) * (blockStart_.capacity() + blockCount_.capacity()) +
-      sizeof(int) * (ballBlockStart_.capacity() + blockOfSlot_.capacity()) +
+      sizeof(int) * (ballBlockStart_.capacity() + ballBlockCount_.capacity()) +
+      sizeof(int) * (bandOf_.capacity() + stripOfColumn_.capacity() + bandOfRow_.capacity()) +
       sizeof(Vec2) * forceShare_.capacity() +
       sizeof(int) * (lastStart_.capacity() + lastOther_.capacity() + lastOf_.capacity()) +
       sizeof(int) * stripOf_.capacity() + sizeof(int) * slot_.capacity() +

@@ -162,12 +162,16 @@ class ScaleSolver {
   std::vector<int> blockStart_;
   // The soft step's: the balls of strip k in band j (ball's grid row /
   // bandRows) are motion_[ballBlockStart_[k * bands_ + j], ballBlockStart_[k
-  // * bands_ + j + 1]); blockOfSlot_ is each motion_ slot's block.
-  std::vector<int> ballBlockStart_, blockOfSlot_;
+  // * bands_ + j + 1]); ballBlockCount_ counts them per thread (as
+  // blockCount_ the rows).
+  std::vector<int> ballBlockStart_, ballBlockCount_;
   // The soft step's, per motion_ slot: a substep's share of this step's
   // forces as a velocity (m/s).
   std::vector<Vec2> forceShare_;
-  std::vector<int> stripOf_;    // per ball (cell order): its vertical strip
+  std::vector<int> stripOf_;  // per ball (cell order): its vertical strip
+  std::vector<int> bandOf_;   // per ball (cell order): its band (grid row / bandRows)
+  // Per grid column its strip, per grid row its band.
+  std::vector<int> stripOfColumn_, bandOfRow_;
   std::vector<Motion> motion_;  // per ball, during the velocity iterations, strip by strip
   // Per ball (cell order): its place in motion_. The balls of a strip lie
   // there one after another, each strip's bottom-up in cell order, so that
