@@ -494,12 +494,20 @@ void ScaleSolver::findRows(const ScaleBodies& s, ThreadPool& pool, int fastCells
     wallMix[w] = mixMaterials(s.material[0], s.wallMaterial[w]);
   pool.run([&](int t) {
     const auto [begin, end] = part(n, t, threads);
-    Same& mine = same[static_cast<std::size_t>(t)];
-    for (std::size_t i = begin; i < end; ++i) {
-      mine.material = mine.material && s.material[i].restitution == s.material[0].restitution &&
-                      s.material[i].friction == s.material[0].friction;
-      mine.forced = mine.forced && (!anyForces || s.forcedVelocity[i] == s.forcedVelocity[0]);
+    // In locals, with & rather than &&: a store to `same` every ball and a
+    // branch every comparison made this loop 1.2 % of the 100,000 pile's
+    // samples.
+    const ContactMaterial first = s.material[0];
+    bool material = true, forced = true;
+    for (std::size_t i = begin; i < end; ++i)
+      material &= (s.material[i].restitution == first.restitution) &
+                  (s.material[i].friction == first.friction);
+    if (anyForces) {
+      const Vec2 push = s.forcedVelocity[0];
+      for (std::size_t i = begin; i < end; ++i)
+        forced &= (s.forcedVelocity[i].x() == push.x()) & (s.forcedVelocity[i].y() == push.y());
     }
+    same[static_cast<std::size_t>(t)] = {material, forced};
     int* slots = slotCount_.data() + static_cast<std::size_t>(t) * stride;
     int* ballsIn =
         soft ? ballBlockCount_.data() + static_cast<std::size_t>(t) * blockStride : nullptr;
