@@ -539,18 +539,38 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
         end[static_cast<std::size_t>(active)] = to[static_cast<std::size_t>(u)];
       }
       while (active > 0) {
-        for (int j = 0; j < active;) {
-          const std::size_t u = static_cast<std::size_t>(j);
-          f(at[u]++);
-          if (at[u] == end[u]) {
-            // This strip is done: the last active one takes its place.
-            --active;
-            at[u] = at[static_cast<std::size_t>(active)];
-            end[u] = end[static_cast<std::size_t>(active)];
-          } else {
-            ++j;
-          }
+        // As many rounds as the shortest strip has rows left: no strip ends
+        // within them, so no row pays a test of its strip's end; and two
+        // strips' rows to a loop body. Together, in alternating A/B runs on
+        // one thread, 0-6 % faster at N = 10,000 (median 3 %) and 3-5 % at
+        // 100,000; the rounds alone, one row to a body, gained about 1 %, and
+        // four rows to a body lost 7 % (docs/scale.md, "Two rows to a loop
+        // body"). Same bits: each strip's rows keep their order.
+        std::size_t rounds = end[0] - at[0];
+        for (int j = 1; j < active; ++j) {
+          const auto u = static_cast<std::size_t>(j);
+          rounds = std::min(rounds, end[u] - at[u]);
         }
+        for (std::size_t round = 0; round < rounds; ++round) {
+          int j = 0;
+          for (; j + 1 < active; j += 2) {
+            const auto u = static_cast<std::size_t>(j);
+            const std::size_t k = at[u]++, l = at[u + 1]++;
+            f(k);
+            f(l);
+          }
+          if (j < active) f(at[static_cast<std::size_t>(j)]++);
+        }
+        // The strips that are done leave; the others keep their order.
+        int kept = 0;
+        for (int j = 0; j < active; ++j) {
+          const auto u = static_cast<std::size_t>(j);
+          if (at[u] == end[u]) continue;
+          at[static_cast<std::size_t>(kept)] = at[u];
+          end[static_cast<std::size_t>(kept)] = end[u];
+          ++kept;
+        }
+        active = kept;
       }
     }
   };
