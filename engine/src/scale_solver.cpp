@@ -509,34 +509,44 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
   // its balls block by block in the same way (ballBlockStart_).
   auto phaseOver = [&](const int* starts, int t, int phase, int band, int parity, auto&& f) {
     std::array<std::size_t, kMaxStrips> from{}, to{};
-    int inner = 0;
-    for (int st = parity; st < strips; st += 2) {
-      const auto i = static_cast<std::size_t>(st);
-      if (owner[i] != t) continue;
-      const std::size_t block =
-          i * static_cast<std::size_t>(bands) + static_cast<std::size_t>(band);
-      const auto b = static_cast<std::size_t>(starts[block]);
-      const auto e = static_cast<std::size_t>(starts[block + 1]);
-      if (left[i] < 0 && right[i] < 0) {
-        if (b < e) {
-          from[static_cast<std::size_t>(inner)] = b;
-          to[static_cast<std::size_t>(inner)] = e;
-          ++inner;
+    int inner = 0, borders = 0;
+    // The border strips first (at most two, so in the first group of
+    // kInterleave), each after its neighbours' waits, and interleaved with
+    // the inner strips: on their own, their rows waited on each other, and
+    // at N = 10,000 on two threads a border strip is one of a thread's three
+    // strips of a parity. Interleaved, the 10,000 pile's step was 3-8 %
+    // faster on two threads in three A/B pairs; at 100,000 (one of eight)
+    // no difference showed (docs/scale.md, "Two rows to a loop body").
+    // Same bits: only rows of strips that share no ball change places.
+    for (int border = 1; border >= 0; --border)
+      for (int st = parity; st < strips; st += 2) {
+        const auto i = static_cast<std::size_t>(st);
+        if (owner[i] != t || (left[i] >= 0 || right[i] >= 0) != (border == 1)) continue;
+        const std::size_t block =
+            i * static_cast<std::size_t>(bands) + static_cast<std::size_t>(band);
+        const auto b = static_cast<std::size_t>(starts[block]);
+        const auto e = static_cast<std::size_t>(starts[block + 1]);
+        if (border == 1) {
+          if (left[i] >= 0) pool.waitFor(left[i], phase);
+          if (right[i] >= 0) pool.waitFor(right[i], phase);
         }
-        continue;
+        if (b == e) continue;
+        from[static_cast<std::size_t>(inner)] = b;
+        to[static_cast<std::size_t>(inner)] = e;
+        ++inner;
+        borders += border;
       }
-      // A border strip: first, and on its own.
-      if (left[i] >= 0) pool.waitFor(left[i], phase);
-      if (right[i] >= 0) pool.waitFor(right[i], phase);
-      for (std::size_t k = b; k < e; ++k) f(k);
-    }
-    if (threads > 1) pool.announce(t, phase + 1);
+    // The neighbour may go on once the border strips are done: now if there
+    // are none, else when the last of them ends (below).
+    if (threads > 1 && borders == 0) pool.announce(t, phase + 1);
     for (int g = 0; g < inner; g += kInterleave) {
       std::array<std::size_t, kInterleave> at{}, end{};
+      std::array<bool, kInterleave> border{};
       int active = 0;
       for (int u = g; u < std::min(inner, g + kInterleave); ++u, ++active) {
         at[static_cast<std::size_t>(active)] = from[static_cast<std::size_t>(u)];
         end[static_cast<std::size_t>(active)] = to[static_cast<std::size_t>(u)];
+        border[static_cast<std::size_t>(active)] = u < borders;
       }
       while (active > 0) {
         // As many rounds as the shortest strip has rows left: no strip ends
@@ -565,9 +575,13 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
         int kept = 0;
         for (int j = 0; j < active; ++j) {
           const auto u = static_cast<std::size_t>(j);
-          if (at[u] == end[u]) continue;
+          if (at[u] == end[u]) {
+            if (border[u] && --borders == 0) pool.announce(t, phase + 1);
+            continue;
+          }
           at[static_cast<std::size_t>(kept)] = at[u];
           end[static_cast<std::size_t>(kept)] = end[u];
+          border[static_cast<std::size_t>(kept)] = border[u];
           ++kept;
         }
         active = kept;
