@@ -518,23 +518,22 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
     // faster on two threads in three A/B pairs; at 100,000 (one of eight)
     // no difference showed (docs/scale.md, "Two rows to a loop body").
     // Same bits: only rows of strips that share no ball change places.
-    for (int border = 1; border >= 0; --border)
+    for (const bool borderPass : {true, false})
       for (int st = parity; st < strips; st += 2) {
         const auto i = static_cast<std::size_t>(st);
-        if (owner[i] != t || (left[i] >= 0 || right[i] >= 0) != (border == 1)) continue;
+        const bool border = left[i] >= 0 || right[i] >= 0;
+        if (owner[i] != t || border != borderPass) continue;
+        if (left[i] >= 0) pool.waitFor(left[i], phase);
+        if (right[i] >= 0) pool.waitFor(right[i], phase);
         const std::size_t block =
             i * static_cast<std::size_t>(bands) + static_cast<std::size_t>(band);
         const auto b = static_cast<std::size_t>(starts[block]);
         const auto e = static_cast<std::size_t>(starts[block + 1]);
-        if (border == 1) {
-          if (left[i] >= 0) pool.waitFor(left[i], phase);
-          if (right[i] >= 0) pool.waitFor(right[i], phase);
-        }
         if (b == e) continue;
         from[static_cast<std::size_t>(inner)] = b;
         to[static_cast<std::size_t>(inner)] = e;
         ++inner;
-        borders += border;
+        if (border) ++borders;
       }
     // The neighbour may go on once the border strips are done: now if there
     // are none, else when the last of them ends (below).
