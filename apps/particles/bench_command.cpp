@@ -25,8 +25,9 @@ constexpr std::array<std::string_view, 18> kScaleOnly{
     "--no-velocity-shock", "--no-settle-iteration", "--no-wavefront", "--substeps",
     "--contact-hertz"};
 // clang-format on
-constexpr std::array<std::string_view, 6> kTimestepOnly{
-    "--repeats", "--full", "--scene", "--skip-csv", "--no-skip-study", "--report"};
+// --repeats is shared: with --scale it repeats each engine run (default 1).
+constexpr std::array<std::string_view, 5> kTimestepOnly{"--full", "--scene", "--skip-csv",
+                                                        "--no-skip-study", "--report"};
 
 // The first option of `names` given on the command line, or "".
 template <std::size_t N>
@@ -49,9 +50,10 @@ void addBenchCommand(CLI::App& app, CommandAction& action) {
   addScaleBenchOptions(*cmd, *scale);
   cmd->callback([cmd, timestep, scale, &action] {
     const bool csvGiven = cmd->get_option("--csv")->count() > 0;
+    const bool repeatsGiven = cmd->get_option("--repeats")->count() > 0;
     const std::string misplaced =
         scale->scale ? givenOption(*cmd, kTimestepOnly) : givenOption(*cmd, kScaleOnly);
-    action = [timestep, scale, csvGiven, misplaced] {
+    action = [timestep, scale, csvGiven, repeatsGiven, misplaced] {
       if (!misplaced.empty()) {
         printError("bench: " + misplaced +
                    (scale->scale ? " is an option of the catalogue benchmark, not of --scale"
@@ -63,6 +65,8 @@ void addBenchCommand(CLI::App& app, CommandAction& action) {
         if (scale->scale) {
           ScaleBenchOptions o = *scale;
           if (csvGiven) o.csv = timestep->csv;  // else the pile's own default, pile.csv
+          // Else 1: a 100,000-disk run takes half a minute, not milliseconds.
+          if (repeatsGiven) o.repeats = timestep->repeats;
           return runScaleBench(o);
         }
         return runTimestepBench(*timestep);

@@ -18,6 +18,7 @@
 #include "particles/pile/pile_metrics.h"
 #include "particles/pile/pile_scene.h"
 #include "particles/reference/box2d_world.h"
+#include "particles/state_hash.h"
 #include "particles/world.h"
 
 namespace particles::cli {
@@ -37,6 +38,11 @@ struct RunFigures {
   double msFalling = NAN;  // ms/step over steps [0, 300)
   double msSettled = NAN;  // ms/step over steps [300, steps), NaN if none
   double diskStepsPerSecond = 0.0;
+  // With --repeats R: the timings above are medians over the R runs, these
+  // the slowest and fastest run's disk-steps/s.
+  int repeats = 1;
+  double diskStepsPerSecondMin = 0.0, diskStepsPerSecondMax = 0.0;
+  std::uint64_t stateHash = 0;  // of the final state (particles/state_hash.h)
   pile::OverlapFigures overlap;
   double keLastMean = 0.0, keLastMax = 0.0, keFinal = 0.0;  // J
   double restEnergy = 0.0;                                  // J
@@ -66,7 +72,9 @@ RunFigures measure(W& world, const SceneDef& scene, long long steps) {
   if (settled > 0) f.msSettled = 1e3 * seconds[1] / static_cast<double>(settled);
   f.diskStepsPerSecond =
       static_cast<double>(f.count) * static_cast<double>(steps) / (seconds[0] + seconds[1]);
+  f.diskStepsPerSecondMin = f.diskStepsPerSecondMax = f.diskStepsPerSecond;
   const std::vector<BallState> end = world.balls();
+  f.stateHash = stateHash(end);
   for (const BallState& b : end)
     f.finite = f.finite && b.position.allFinite() && b.velocity.allFinite();
   f.overlap = pile::measureOverlap(end, scene.balls);
@@ -89,6 +97,35 @@ RunFigures measure(W& world, const SceneDef& scene, long long steps) {
   return f;
 }
 
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t h = v.size() / 2;
+  return v.size() % 2 == 1 ? v[h] : 0.5 * (v[h - 1] + v[h]);
+}
+
+// The first of several runs of one configuration, with their timings as
+// medians (each figure's own: the host's speed drifts within a run) and the
+// spread of their disk-steps/s. Every other figure is the first run's: the
+// runs ended in the same state (the caller checks the hashes).
+RunFigures overRepeats(const std::vector<RunFigures>& runs) {
+  RunFigures f = runs.front();
+  std::vector<double> falling, settled, speed;
+  for (const RunFigures& r : runs) {
+    falling.push_back(r.msFalling);
+    settled.push_back(r.msSettled);
+    speed.push_back(r.diskStepsPerSecond);
+  }
+  f.repeats = static_cast<int>(runs.size());
+  f.msFalling = median(falling);
+  // NaN in every run (none of its steps past the falling phase), which the
+  // sort must not see.
+  if (!std::isnan(f.msSettled)) f.msSettled = median(settled);
+  f.diskStepsPerSecond = median(speed);
+  f.diskStepsPerSecondMin = *std::min_element(speed.begin(), speed.end());
+  f.diskStepsPerSecondMax = *std::max_element(speed.begin(), speed.end());
+  return f;
+}
+
 std::string fixed(double v, int digits) {
   if (std::isnan(v)) return "-";
   char buf[64];
@@ -104,9 +141,11 @@ std::string general(double v) {
 
 void printTable(const std::vector<RunFigures>& rows,
                 const std::vector<std::optional<RunFigures>>& ref) {
-  std::printf("%-7s %8s %3s %3s %6s %10s %10s %10s %8s %8s %12s %6s %4s %7s %8s %8s %10s\n",
-              "engine", "N", "T", "K", "steps", "ms 0-299", "ms 300+", "Mdisk-st/s", "ovl max",
-              "ovl mean", "KE last60", "rest", "out", "B/ball", "x Box2D", "ovl/B2D", "seed");
+  std::printf(
+      "%-7s %8s %3s %3s %6s %10s %10s %10s %3s %13s %8s %8s %12s %6s %4s %7s %8s %8s %10s %16s\n",
+      "engine", "N", "T", "K", "steps", "ms 0-299", "ms 300+", "Mdisk-st/s", "R", "min-max",
+      "ovl max", "ovl mean", "KE last60", "rest", "out", "B/ball", "x Box2D", "ovl/B2D", "seed",
+      "state hash");
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const RunFigures& r = rows[i];
     const bool engine = r.engine != "box2d";
@@ -115,30 +154,30 @@ void printTable(const std::vector<RunFigures>& rows,
       timeRatio = r.diskStepsPerSecond / ref[i]->diskStepsPerSecond;
       overlapRatio = r.overlap.max / ref[i]->overlap.max;
     }
+    const std::string spread = r.repeats > 1 ? fixed(r.diskStepsPerSecondMin / 1e6, 3) + "-" +
+                                                   fixed(r.diskStepsPerSecondMax / 1e6, 3)
+                                             : "-";
     std::printf(
-        "%-7s %8d %3d %3d %6lld %10s %10s %10s %7s%% %7s%% %12s %6s %4lld %7s %8s %8s %10llu\n",
+        "%-7s %8d %3d %3d %6lld %10s %10s %10s %3d %13s %7s%% %7s%% %12s %6s %4lld %7s %8s %8s "
+        "%10llu %16s\n",
         r.engine.c_str(), r.count, r.threads, r.iterations, r.steps, fixed(r.msFalling, 2).c_str(),
-        fixed(r.msSettled, 2).c_str(), fixed(r.diskStepsPerSecond / 1e6, 3).c_str(),
-        fixed(100.0 * r.overlap.max, 2).c_str(), fixed(100.0 * r.overlap.mean, 3).c_str(),
-        general(r.keLastMean).c_str(), r.restStep ? std::to_string(*r.restStep).c_str() : "no",
-        r.outside, r.bytesPerBall ? fixed(*r.bytesPerBall, 0).c_str() : "-",
-        fixed(timeRatio, 2).c_str(), fixed(overlapRatio, 2).c_str(),
-        static_cast<unsigned long long>(r.seed));
+        fixed(r.msSettled, 2).c_str(), fixed(r.diskStepsPerSecond / 1e6, 3).c_str(), r.repeats,
+        spread.c_str(), fixed(100.0 * r.overlap.max, 2).c_str(),
+        fixed(100.0 * r.overlap.mean, 3).c_str(), general(r.keLastMean).c_str(),
+        r.restStep ? std::to_string(*r.restStep).c_str() : "no", r.outside,
+        r.bytesPerBall ? fixed(*r.bytesPerBall, 0).c_str() : "-", fixed(timeRatio, 2).c_str(),
+        fixed(overlapRatio, 2).c_str(), static_cast<unsigned long long>(r.seed),
+        hashHex(r.stateHash).c_str());
   }
   std::printf(
-      "K: velocity iterations per step (soft: substeps); ms: mean wall time per step; KE last60: "
-      "mean kinetic "
-      "energy (J) over the last 60 steps; rest: the step from which KE stays <= "
+      "K: velocity iterations per step (soft: substeps); ms: mean wall time per step; R: runs "
+      "(--repeats), ms and Mdisk-st/s their medians, min-max the slowest and fastest; KE last60: "
+      "mean kinetic energy (J) over the last 60 steps; rest: the step from which KE stays <= "
       "M (%.2g m/s)^2 / 2 (\"no\": not at rest at the end); out: balls with their centre "
       "outside the box at the end; x Box2D: disk-steps/s engine / "
-      "Box2D; ovl/B2D: max overlap engine / Box2D\n",
+      "Box2D; ovl/B2D: max overlap engine / Box2D; state hash: FNV-1a of the final state, as "
+      "'particles run --hash' (the same for every thread count)\n",
       pile::kRestSpeed);
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t h = v.size() / 2;
-  return v.size() % 2 == 1 ? v[h] : 0.5 * (v[h - 1] + v[h]);
 }
 
 // With several seeds, one line per engine, N and thread count over its
@@ -185,6 +224,27 @@ void printSeedSummary(const std::vector<RunFigures>& rows,
       "last60: means over the seeds; at rest: runs at rest at the end\n");
 }
 
+// The engine promises the same bits whatever the thread count
+// (docs/determinism.md): runs that differ in it alone must end in the same
+// state. Says which did not, on stderr.
+bool sameStateForEveryThreadCount(const std::vector<RunFigures>& rows) {
+  bool same = true;
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    for (std::size_t j = i + 1; j < rows.size(); ++j) {
+      const RunFigures &a = rows[i], &b = rows[j];
+      if (a.engine == "box2d" || a.engine != b.engine || a.count != b.count || a.seed != b.seed ||
+          a.iterations != b.iterations || a.stateHash == b.stateHash)
+        continue;
+      printError("bench: " + a.engine + " N=" + std::to_string(a.count) +
+                 " K=" + std::to_string(a.iterations) + " seed " + std::to_string(a.seed) +
+                 ": T=" + std::to_string(a.threads) + " and T=" + std::to_string(b.threads) +
+                 " ended in different states (hashes " + hashHex(a.stateHash) + " and " +
+                 hashHex(b.stateHash) + "): the engine is not deterministic");
+      same = false;
+    }
+  return same;
+}
+
 void writeCsv(std::ostream& out, const std::vector<RunFigures>& rows,
               const std::vector<std::optional<RunFigures>>& ref, bool poly) {
   out << "engine,n,polydisperse,threads,velocity_iterations,steps,"
@@ -192,7 +252,7 @@ void writeCsv(std::ostream& out, const std::vector<RunFigures>& rows,
          "disk_steps_per_s,overlap_max_fraction,overlap_mean_fraction,touching_pairs,"
          "ke_last60_mean_J,ke_last60_max_J,ke_final_J,rest_energy_J,rest_step,bytes_per_ball,"
          "speed_ratio_engine_over_box2d,overlap_max_ratio_engine_over_box2d,balls_outside_box,"
-         "seed\n";
+         "seed,repeats,disk_steps_per_s_min,disk_steps_per_s_max,state_hash\n";
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const RunFigures& r = rows[i];
     const bool withRef = r.engine != "box2d" && ref[i].has_value();
@@ -206,7 +266,8 @@ void writeCsv(std::ostream& out, const std::vector<RunFigures>& rows,
         << (r.bytesPerBall ? general(*r.bytesPerBall) : "") << ','
         << (withRef ? general(r.diskStepsPerSecond / ref[i]->diskStepsPerSecond) : "") << ','
         << (withRef ? general(r.overlap.max / ref[i]->overlap.max) : "") << ',' << r.outside << ','
-        << r.seed << '\n';
+        << r.seed << ',' << r.repeats << ',' << general(r.diskStepsPerSecondMin) << ','
+        << general(r.diskStepsPerSecondMax) << ',' << hashHex(r.stateHash) << '\n';
   }
 }
 
@@ -322,6 +383,7 @@ int runScaleBench(const ScaleBenchOptions& o) {
   std::vector<RunFigures> rows;
   std::vector<std::optional<RunFigures>> ref;  // the Box2D run of each row's N
   bool stopped = false;                        // an engine run threw StepError
+  bool diverged = false;                       // runs that must end in the same state did not
   const std::vector<int> iterations =
       o.iterations.empty() ? std::vector<int>{SolverSettings{}.scaleVelocityIterations}
                            : o.iterations;
@@ -364,27 +426,39 @@ int runScaleBench(const ScaleBenchOptions& o) {
           if (o.noWavefront) scene.solver.scaleWavefront = false;
           if (o.substeps > 0) scene.solver.scaleSubsteps = o.substeps;
           if (o.contactHertz > 0.0) scene.solver.scaleContactHertz = o.contactHertz;
-          World world(scene);
-          RunFigures f;
+          const std::string name = o.substeps > 0 ? "soft" : "engine";
+          const std::string run = name + " N=" + std::to_string(n) + " T=" + std::to_string(t) +
+                                  " K=" + std::to_string(o.substeps > 0 ? o.substeps : k) +
+                                  " seed " + std::to_string(params.seed);
+          std::vector<RunFigures> runs;
           try {
-            f = measure(world, scene, o.steps);
+            for (int r = 0; r < std::max(1, o.repeats); ++r) {
+              World world(scene);  // a fresh world each time: construction is not timed
+              RunFigures f = measure(world, scene, o.steps);
+              f.bytesPerBall = static_cast<double>(world.memoryBytes()) / n;
+              runs.push_back(f);
+            }
           } catch (const StepError& e) {
             // This run blew up (docs/scale.md, "A state that cannot be
             // stepped"): the others still make the table and the CSV.
-            printError("bench: engine N=" + std::to_string(n) + " T=" + std::to_string(t) +
-                       " K=" + std::to_string(k) + " seed " + std::to_string(params.seed) + ": " +
-                       e.what());
+            printError("bench: " + run + ": " + e.what());
             stopped = true;
             continue;
           }
-          f.engine = o.substeps > 0 ? "soft" : "engine";
+          for (const RunFigures& again : runs)
+            if (again.stateHash != runs.front().stateHash) {
+              printError("bench: " + run + ": its runs ended in different states (hashes " +
+                         hashHex(runs.front().stateHash) + " and " + hashHex(again.stateHash) +
+                         "): the engine is not deterministic");
+              diverged = true;
+              break;
+            }
+          RunFigures f = overRepeats(runs);
+          f.engine = name;
           f.seed = params.seed;
           f.threads = t;
           f.iterations = o.substeps > 0 ? o.substeps : k;
-          f.bytesPerBall = static_cast<double>(world.memoryBytes()) / n;
-          std::fprintf(stderr, "particles: bench: %s N=%d T=%d K=%d seed %llu done\n",
-                       f.engine.c_str(), n, t, f.iterations,
-                       static_cast<unsigned long long>(params.seed));
+          std::fprintf(stderr, "particles: bench: %s done\n", run.c_str());
           rows.push_back(f);
           ref.push_back(box2d);
         }
@@ -396,6 +470,7 @@ int runScaleBench(const ScaleBenchOptions& o) {
   }
   printTable(rows, ref);
   if (o.seeds > 1) printSeedSummary(rows, ref, o.seeds);
+  if (!sameStateForEveryThreadCount(rows)) diverged = true;
   bool finite = true;
   for (const RunFigures& r : rows) finite = finite && r.finite;
   if (csv.is_open()) {
@@ -410,7 +485,7 @@ int runScaleBench(const ScaleBenchOptions& o) {
     printError("bench: a run diverged (non-finite state)");
     return kExitFailed;
   }
-  return stopped ? kExitFailed : kExitOk;
+  return stopped || diverged ? kExitFailed : kExitOk;
 }
 
 }  // namespace particles::cli

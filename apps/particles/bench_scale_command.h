@@ -39,6 +39,9 @@ struct ScaleBenchOptions {
   // --substeps: SolverSettings::scaleSubsteps, the soft step (0 = the rigid step, the default)
   int substeps = 0;
   double contactHertz = 0.0;  // --contact-hertz: SolverSettings::scaleContactHertz (0 = default)
+  // --repeats (shared with the catalogue benchmark, whose default is 3): runs
+  // of each engine configuration; its timings are their medians
+  int repeats = 1;
 };
 
 // Registers the options above on the `bench` subcommand.

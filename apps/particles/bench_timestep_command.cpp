@@ -142,7 +142,9 @@ std::string ratioText(const std::optional<timestep::EqualErrorRatio>& r) {
 void addTimestepBenchOptions(CLI::App& bench, TimestepBenchOptions& o) {
   bench
       .add_option("--repeats", o.repeats,
-                  "Timed runs per configuration (the median counts), 1 to 1000")
+                  "Timed runs per configuration (the median counts), 1 to 1000; with --scale, "
+                  "runs of each engine configuration (default 1), which must end in the same "
+                  "state")
       ->type_name("N")
       ->default_val(o.repeats)
       ->check(integerInRange(1, 1000));

@@ -38,6 +38,8 @@ TEST(CliBenchScale, BadArgumentsAreExitTwo) {
   expectBadInput("bench --scale --contact-hertz 0 --csv ''", "--contact-hertz");
   // The soft step has substeps, not iterations.
   expectBadInput("bench --scale --substeps 4 --iterations 8 --csv ''", "--iterations");
+  expectBadInput("bench --scale --repeats 0 --csv ''", "--repeats");
+  expectBadInput("bench --scale --repeats 1001 --csv ''", "--repeats");
 }
 
 // Without --scale, bench is the catalogue benchmark: an option of the pile's
@@ -97,19 +99,23 @@ TEST(CliBenchScale, SoftStepRunIsASoftRow) {
   EXPECT_FALSE(field.empty()) << line;
 }
 
-// A CSV line without its fields [first, last] (0-based); each field kept
-// ends with a comma.
-std::string withoutFields(const std::string& line, int first, int last) {
+// A CSV line without its fields [first, last] (0-based), and from `from` on
+// without [first2, last2]; each field kept ends with a comma.
+std::string withoutFields(const std::string& line, int first, int last, int first2 = -1,
+                          int last2 = -2) {
   std::istringstream fields(line);
   std::string field, kept;
   for (int i = 0; std::getline(fields, field, ','); ++i)
-    if (i < first || i > last) kept += field + ",";
+    if ((i < first || i > last) && (i < first2 || i > last2)) kept += field + ",";
   return kept;
 }
 
-// Every CSV line of `engine` with its three timing fields (ms 0-299,
-// ms 300+, disk-steps/s: columns 6 to 8) left out: they differ from run to run, nothing else
-// may. The fields kept end with a comma each.
+// The CSV's fields (0-based) that hold timings: ms 0-299, ms 300+ and
+// disk-steps/s (6 to 8); the slowest and fastest run's disk-steps/s (23, 24).
+constexpr int kTimingFirst = 6, kTimingLast = 8, kSpreadFirst = 23, kSpreadLast = 24;
+
+// Every CSV line of `engine` with its timing fields left out: they differ
+// from run to run, nothing else may. The fields kept end with a comma each.
 std::vector<std::string> figuresBySeed(const std::string& csv, const std::string& engine) {
   std::vector<std::string> lines;
   std::istringstream in(csv);
@@ -117,9 +123,18 @@ std::vector<std::string> figuresBySeed(const std::string& csv, const std::string
   std::getline(in, line);  // the header, whose first column is named "engine" too
   while (std::getline(in, line)) {
     if (!line.starts_with(engine + ",")) continue;
-    lines.push_back(withoutFields(line, 6, 8));
+    lines.push_back(withoutFields(line, kTimingFirst, kTimingLast, kSpreadFirst, kSpreadLast));
   }
   return lines;
+}
+
+// The fields of a CSV line (0-based).
+std::vector<std::string> fieldsOf(const std::string& line) {
+  std::vector<std::string> out;
+  std::istringstream fields(line);
+  std::string field;
+  while (std::getline(fields, field, ',')) out.push_back(field);
+  return out;
 }
 
 // --seeds 2 runs the seeds S and S + 1: the same figures, bit for bit, as two
@@ -136,7 +151,7 @@ TEST(CliBenchScale, SeedsRunsConsecutiveSeedsAndSummarises) {
   const std::vector<std::string> one = figuresBySeed(readFile(second), "engine");
   ASSERT_EQ(two.size(), 2u);
   ASSERT_EQ(one.size(), 1u);
-  EXPECT_TRUE(two[0].ends_with(",7,")) << two[0];
+  EXPECT_NE(two[0].find(",7,1,"), std::string::npos) << two[0];  // seed 7, one run
   EXPECT_EQ(two[1], one[0]);
   EXPECT_NE(two[0], two[1]);  // another seed, another pile
 }
@@ -164,6 +179,53 @@ TEST(CliBenchScale, IterationsRunsOneEngineRunPerValue) {
   const std::string text = readFile(both);
   EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 4) << text;  // header, K=2, K=8, box2d
   expectBadInput("bench --scale --iterations 0 --csv ''", "--iterations");
+}
+
+// --repeats R runs each engine configuration R times: the timings are the
+// medians, with the slowest and fastest run's disk-steps/s beside them, and
+// every other figure is that of one run, bit for bit: the runs, and the runs
+// with 1 and 2 threads, end in the same state (the hash column).
+TEST(CliBenchScale, RepeatsGiveMediansAndOneState) {
+  TempDir dir;
+  const std::string three = dir.file("three.csv").string(), once = dir.file("once.csv").string();
+  // From SolverSettings::scaleParallelFrom (5,000 disks) on, so that T = 2
+  // runs two threads.
+  const std::string common = "bench --scale --n 5000 --threads 1 2 --steps 12 --no-box2d --csv ";
+  const CliResult r = runCli(common + shellQuote(three) + " --repeats 3");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("state hash"), std::string::npos) << r.out;
+  ASSERT_EQ(runCli(common + shellQuote(once)).status, 0);
+  const std::string text = readFile(three);
+  EXPECT_NE(text.find(",repeats,disk_steps_per_s_min,disk_steps_per_s_max,state_hash\n"),
+            std::string::npos)
+      << text;
+  std::istringstream in(text);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::vector<std::string>> runs;
+  while (std::getline(in, line)) runs.push_back(fieldsOf(line));
+  ASSERT_EQ(runs.size(), 2u) << text;
+  for (const std::vector<std::string>& f : runs) {
+    ASSERT_EQ(f.size(), 26u) << text;
+    EXPECT_EQ(f[22], "3");
+    const double median = std::stod(f[8]), slowest = std::stod(f[23]), fastest = std::stod(f[24]);
+    EXPECT_GT(slowest, 0.0);
+    EXPECT_LE(slowest, median);
+    EXPECT_LE(median, fastest);
+    EXPECT_EQ(f[25].size(), 16u);
+  }
+  EXPECT_EQ(runs[0][3], "1");
+  EXPECT_EQ(runs[1][3], "2");
+  EXPECT_EQ(runs[0][25], runs[1][25]);  // 1 and 2 threads: one state
+  // One run each: the same figures but the count of runs.
+  const std::vector<std::string> repeated = figuresBySeed(text, "engine");
+  const std::vector<std::string> single = figuresBySeed(readFile(once), "engine");
+  ASSERT_EQ(single.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    // Field 22 (repeats) is field 19 once the timings 6-8 are left out.
+    EXPECT_EQ(withoutFields(repeated[i], 19, 19), withoutFields(single[i], 19, 19));
+    EXPECT_NE(repeated[i], single[i]);
+  }
 }
 
 }  // namespace
