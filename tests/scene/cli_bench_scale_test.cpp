@@ -4,8 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <initializer_list>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli_support.h"
@@ -63,6 +65,15 @@ TEST(CliBenchScale, UnwritableCsvIsExitTwo) {
   expectBadInput("bench --scale --n 10 --steps 1 --csv /nonexistent-dir/pile.csv", "--csv");
 }
 
+// The fields of a CSV line (0-based).
+std::vector<std::string> fieldsOf(const std::string& line) {
+  std::vector<std::string> out;
+  std::istringstream fields(line);
+  std::string field;
+  while (std::getline(fields, field, ',')) out.push_back(field);
+  return out;
+}
+
 TEST(CliBenchScale, TinyRunWritesTableAndCsv) {
   TempDir dir;
   const std::string csv = dir.file("pile.csv").string();
@@ -93,20 +104,21 @@ TEST(CliBenchScale, SoftStepRunIsASoftRow) {
   ASSERT_NE(at, std::string::npos) << text;
   const std::string line = text.substr(at + 1, text.find('\n', at + 1) - at - 1);
   // speed_ratio_engine_over_box2d (field 18) is filled in.
-  std::istringstream fields(line);
-  std::string field;
-  for (int i = 0; i <= 18; ++i) std::getline(fields, field, ',');
-  EXPECT_FALSE(field.empty()) << line;
+  const std::vector<std::string> fields = fieldsOf(line);
+  ASSERT_GT(fields.size(), 18u) << line;
+  EXPECT_FALSE(fields[18].empty()) << line;
 }
 
-// A CSV line without its fields [first, last] (0-based), and from `from` on
-// without [first2, last2]; each field kept ends with a comma.
-std::string withoutFields(const std::string& line, int first, int last, int first2 = -1,
-                          int last2 = -2) {
-  std::istringstream fields(line);
-  std::string field, kept;
-  for (int i = 0; std::getline(fields, field, ','); ++i)
-    if ((i < first || i > last) && (i < first2 || i > last2)) kept += field + ",";
+// A CSV line without the fields of the ranges `drop` ([first, last], 0-based);
+// each field kept ends with a comma.
+std::string withoutFields(const std::string& line,
+                          std::initializer_list<std::pair<int, int>> drop) {
+  const std::vector<std::string> fields = fieldsOf(line);
+  std::string kept;
+  for (int i = 0; i < static_cast<int>(fields.size()); ++i)
+    if (std::none_of(drop.begin(), drop.end(),
+                     [i](const auto& range) { return range.first <= i && i <= range.second; }))
+      kept += fields[static_cast<std::size_t>(i)] + ",";
   return kept;
 }
 
@@ -123,18 +135,10 @@ std::vector<std::string> figuresBySeed(const std::string& csv, const std::string
   std::getline(in, line);  // the header, whose first column is named "engine" too
   while (std::getline(in, line)) {
     if (!line.starts_with(engine + ",")) continue;
-    lines.push_back(withoutFields(line, kTimingFirst, kTimingLast, kSpreadFirst, kSpreadLast));
+    lines.push_back(
+        withoutFields(line, {{kTimingFirst, kTimingLast}, {kSpreadFirst, kSpreadLast}}));
   }
   return lines;
-}
-
-// The fields of a CSV line (0-based).
-std::vector<std::string> fieldsOf(const std::string& line) {
-  std::vector<std::string> out;
-  std::istringstream fields(line);
-  std::string field;
-  while (std::getline(fields, field, ',')) out.push_back(field);
-  return out;
 }
 
 // --seeds 2 runs the seeds S and S + 1: the same figures, bit for bit, as two
@@ -174,7 +178,7 @@ TEST(CliBenchScale, IterationsRunsOneEngineRunPerValue) {
   EXPECT_TRUE(runs[1].starts_with("engine,60,0,1,8,30,")) << runs[1];
   // Without Box2D the two ratio columns (15 and 16 once the timings are left
   // out) are empty; the rest is the same.
-  EXPECT_EQ(withoutFields(runs[1], 15, 16), withoutFields(single[0], 15, 16));
+  EXPECT_EQ(withoutFields(runs[1], {{15, 16}}), withoutFields(single[0], {{15, 16}}));
   EXPECT_NE(runs[0], runs[1]);
   const std::string text = readFile(both);
   EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 4) << text;  // header, K=2, K=8, box2d
@@ -223,7 +227,7 @@ TEST(CliBenchScale, RepeatsGiveMediansAndOneState) {
   ASSERT_EQ(single.size(), 2u);
   for (std::size_t i = 0; i < 2; ++i) {
     // Field 22 (repeats) is field 19 once the timings 6-8 are left out.
-    EXPECT_EQ(withoutFields(repeated[i], 19, 19), withoutFields(single[i], 19, 19));
+    EXPECT_EQ(withoutFields(repeated[i], {{19, 19}}), withoutFields(single[i], {{19, 19}}));
     EXPECT_NE(repeated[i], single[i]);
   }
 }
