@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <utility>
 
+#include "particles/scale_solver.h"
 #include "particles/scene.h"
 #include "particles/types.h"
 
@@ -62,6 +63,22 @@ inline void placeByBucket(int* counts, std::size_t stride, std::size_t buckets, 
 inline bool wallOutsideBox(const Vec2& lo, const Vec2& hi, const WallDef& wall) {
   return hi.x() < std::min(wall.a.x(), wall.b.x()) || lo.x() > std::max(wall.a.x(), wall.b.x()) ||
          hi.y() < std::min(wall.a.y(), wall.b.y()) || lo.y() > std::max(wall.a.y(), wall.b.y());
+}
+
+// Applies P = dn n + dt tau to the two bodies of a row (b < 0: a wall, which
+// takes nothing). Signs as in contact_impulse_impl.h: b gets +P, a gets -P,
+// and both spins change by -r dt / J.
+inline void applyRow(ScaleSolver::Motion* m, const ScaleSolver::Row& r, double dn, double dt) {
+  const Vec2 n = r.normal();
+  const Vec2 p = dn * n + dt * perpLeft(n);
+  ScaleSolver::Motion& a = m[r.a];
+  a.velocity -= a.invMass * p;
+  a.angularVelocity -= a.radius * dt * a.invInertia;
+  if (r.b >= 0) {
+    ScaleSolver::Motion& b = m[r.b];
+    b.velocity += b.invMass * p;
+    b.angularVelocity -= b.radius * dt * b.invInertia;
+  }
 }
 
 }  // namespace particles::scale

@@ -63,6 +63,8 @@ nlohmann::json sceneJson(const SceneDef& s) {
                  {"grid_threshold", s.solver.gridThreshold},
                  {"swept_walls", s.solver.sweptWalls},
                  {"swept_balls", s.solver.sweptBalls}};
+  // Only when on: scene files written before it keep their text.
+  if (s.solver.scaleSequentialImpacts) j["solver"]["sequential_impacts"] = true;
   // The soft step's keys only with substeps: the loader refuses its spring's
   // keys without them.
   if (s.solver.scaleSubsteps > 0) {

@@ -351,6 +351,11 @@ TEST_F(Rejection, SweptBallsNotBoolean) {
                  "must be true or false, got null");
 }
 
+TEST_F(Rejection, SequentialImpactsNotBoolean) {
+  expectRejected(withBall(R"("solver": {"sequential_impacts": 1})"), "solver.sequential_impacts",
+                 "must be true or false, got");
+}
+
 TEST_F(Rejection, SoftSubstepsOutOfRange) {
   expectRejected(withBall(R"("solver": {"soft_substeps": 1001})"), "solver.soft_substeps",
                  "must be an integer in [0, 1000], got 1001");

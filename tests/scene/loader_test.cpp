@@ -62,7 +62,7 @@ TEST(Loader, EveryTopLevelKeyRead) {
     "forces": [{"type": "pull", "ball": 0, "target": [3, 2], "stiffness": 10}],
     "dt": 0.002, "duration": 0.5,
     "solver": {"contact_passes": 7, "correction_passes": 3, "grid_threshold": 0,
-               "swept_walls": true, "swept_balls": true}})");
+               "swept_walls": true, "swept_balls": true, "sequential_impacts": true}})");
   EXPECT_EQ(s.name, "all");
   EXPECT_EQ(s.gravity, Vec2(0.5, -9.81));
   EXPECT_EQ(s.contact.restitution, 0.25);
@@ -81,6 +81,7 @@ TEST(Loader, EveryTopLevelKeyRead) {
   EXPECT_EQ(s.solver.gridThreshold, 0);
   EXPECT_TRUE(s.solver.sweptWalls);
   EXPECT_TRUE(s.solver.sweptBalls);
+  EXPECT_TRUE(s.solver.scaleSequentialImpacts);
 }
 
 TEST(Loader, SoftStepKeys) {

@@ -47,6 +47,7 @@ TEST(SceneWriter, RoundTripsEveryField) {
   s.solver.gridThreshold = 0;
   s.solver.sweptWalls = true;  // not the defaults: the writer must carry them
   s.solver.sweptBalls = true;
+  s.solver.scaleSequentialImpacts = true;
 
   const SceneDef r = parseScene(sceneText(s), "written.json");
   EXPECT_EQ(r.name, s.name);
@@ -90,6 +91,7 @@ TEST(SceneWriter, RoundTripsEveryField) {
   EXPECT_EQ(r.solver.gridThreshold, 0);
   EXPECT_TRUE(r.solver.sweptWalls);
   EXPECT_TRUE(r.solver.sweptBalls);
+  EXPECT_TRUE(r.solver.scaleSequentialImpacts);
   EXPECT_EQ(r.solver.scaleSubsteps, 0);  // the rigid step: no soft keys written
 }
 

@@ -139,6 +139,19 @@ class ScaleSolver {
   // gap within the step: -e times the approach they brought. 0: no
   // restitution pass for this row.
   std::vector<double> bounce_;
+  // SolverSettings::scaleSequentialImpacts: each thread's rows that pushed
+  // this step (a normal impulse before or after the restitution pass), and
+  // replayImpacts' scratch (per ball: its node, -1 for none).
+  struct alignas(64) ThreadRows {
+    std::vector<int> rows;
+  };
+  std::vector<ThreadRows> impactRows_;
+  std::vector<int> impactNode_;
+  // Replays the groups of impacts described at scaleSequentialImpacts
+  // (scale_impacts.cpp). One thread, after the velocity passes.
+  void replayImpacts(const ScaleBodies& bodies);
+  int replayedGroups_ = 0, leftGroups_ = 0;  // replayImpacts' counts, this step
+  void replayGroup(const ScaleBodies& bodies, const std::vector<int>& rows);
   // The soft step's (SolverSettings::scaleSubsteps), per row in the same
   // order: the gap at the start of the step (m, < 0: overlap), and the
   // impulses the row gave over the whole step (N s; its lambdaN and lambdaT

@@ -44,6 +44,12 @@ struct StepStats {
   double maxOverlap = 0.0;      // m, largest overlap seen by the position pass
   long long passLimitHits = 0;  // steps (in total) that ended at SolverSettings::contactPasses
   long long steps = 0;          // steps taken in total
+  // The large-scene path with SolverSettings::scaleSequentialImpacts, this
+  // step: the groups of two impacts or more on one ball replayed in
+  // sequence, and the groups of impacts left to the velocity passes because
+  // a touching contact pushed one of their balls.
+  int sequentialGroups = 0;
+  int sequentialGroupsLeft = 0;
 };
 
 // Which optional stages this scene needs; decided once when the world is
