@@ -74,9 +74,12 @@ void ScaleSolver::replayImpacts(const ScaleBodies& s) {
   // 0: its bounce, or 0) has no such last word: a lone one is replayed, as
   // another row's impulse, taken back within the passes, may have moved where
   // its own ended. A group of several rows is replayed if they are all
-  // impacts; with a touching row among them it may carry a load (a pile's
-  // contacts, which the warm start holds up and the support sweep moves
-  // without impulse) and is left to the passes.
+  // impacts, or if nothing presses balls together: without gravity and scene
+  // forces no contact carries a load, and every touching row is an impact
+  // too. Otherwise a touching row may carry a load (a pile's contacts, which
+  // the warm start holds up and the support sweep moves without impulse), and
+  // the group is left to the passes.
+  const bool unloaded = s.forcedVelocity.empty();
   std::vector<int> count(parent.size(), 0);
   std::vector<char> touching(parent.size(), 0);
   const auto rootOf = [&](int k) {
@@ -94,7 +97,7 @@ void ScaleSolver::replayImpacts(const ScaleBodies& s) {
   for (const int k : rows) {
     const std::size_t root = rootOf(k);
     if (count[root] == 1 && !touching[root]) continue;
-    if (count[root] > 1 && touching[root]) {
+    if (count[root] > 1 && touching[root] && !unloaded) {
       if (groupOf[root] == -1) {
         groupOf[root] = -2;  // counted once
         ++leftGroups_;

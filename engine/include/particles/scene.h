@@ -296,15 +296,16 @@ struct SolverSettings {
   // (bench --scale --no-wavefront).
   bool scaleWavefront = true;
   // Whether the large-scene path's rigid step resolves, after its velocity
-  // passes, each group of balls that met one another and nothing else within
-  // the step, with two impacts or more on one ball, as a sequence of
-  // pairwise impacts (the handout's impulse, resolveImpact) in the order of
-  // their times of impact, instead of keeping the passes' simultaneous
-  // solution: the elastic gas then keeps its energy, which it otherwise loses
-  // in exactly those steps, at first order in dt (docs/scale.md, "Impacts in
-  // sequence"). Off by default: it changes a pile's bits wherever balls meet
-  // in mid-air, and it has not been measured on the piles yet. The soft step
-  // (scaleSubsteps) ignores it.
+  // passes, each group of balls that met one another within the step, with
+  // two impulses or more on one ball, as a sequence of pairwise impacts (the
+  // handout's impulse, resolveImpact) in the order of their times of impact,
+  // instead of keeping the passes' simultaneous solution: an elastic gas then
+  // keeps its energy to rounding, which it otherwise loses in exactly those
+  // steps, at first order in dt (docs/scale.md, "Impacts in sequence").
+  // Under gravity or scene forces a group with a touching contact, which may
+  // carry a load, is left to the passes. Off by default: it changes a pile's
+  // bits wherever balls meet in mid-air, and on the 10,000 pile it was mixed
+  // for rest. The soft step (scaleSubsteps) ignores it.
   bool scaleSequentialImpacts = false;
   // Shock propagation in the large-scene path's overlap removal
   // (dimensionless, 0..1; docs/scale.md, "Shock propagation"). Under gravity
