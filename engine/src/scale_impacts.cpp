@@ -4,13 +4,14 @@
 // rounding, but when a ball meets two others within one step (three balls
 // meeting, or an impact passed on to a third ball) one restitution sweep
 // cannot give every pair its bounce, and an elastic gas loses energy in
-// exactly those steps. Here such a group of rows that were apart at the start
-// of the step, when no touching contact pushed its balls, is solved again as
-// the small-scene step would: pairwise impacts, one after another, each the
-// handout's impulse, in the order of their times of impact within the step.
+// exactly those steps. Here such a group (and a lone touching impact, which
+// the passes may leave off its bounce) is solved again as the small-scene
+// step would: pairwise impacts, one after another, each the handout's
+// impulse, in the order of their times of impact within the step. Under
+// gravity or scene forces a group with a touching row, which may carry a
+// load, is left to the passes (replayImpacts says why).
 #include <algorithm>
 #include <limits>
-#include <numeric>
 #include <vector>
 
 #include "particles/contact_impulse.h"

@@ -782,14 +782,19 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
                             [&](std::size_t k) { solveRow<true>(m, rows_[k], 1.0); });
           case Pass::Restitution:
             return onePhase(t, phase, band, parity, [&](std::size_t k) {
+              // By default only the rows that bounce are read here.
+              if (!sequential) {
+                if (bounce_[k] > 0.0) restituteRow(m, rows_[k], bounce_[k]);
+                return;
+              }
               const Row& r = rows_[k];
               // A row took part in the step's impacts if it pushed before or
               // after its bounce: one whose balls another impact already
               // sends apart faster than its bounce gives its impulse back here.
               const bool pushed = r.lambdaN > 0.0;
               if (bounce_[k] > 0.0) restituteRow(m, rows_[k], bounce_[k]);
-              if (!sequential || !(pushed || r.lambdaN > 0.0 || r.lambdaT != 0.0)) return;
-              impactRows_[static_cast<std::size_t>(t)].rows.push_back(static_cast<int>(k));
+              if (pushed || r.lambdaN > 0.0 || r.lambdaT != 0.0)
+                impactRows_[static_cast<std::size_t>(t)].rows.push_back(static_cast<int>(k));
             });
           case Pass::Support:
             return onePhase(t, phase, band, parity,

@@ -45,9 +45,9 @@ struct StepStats {
   long long passLimitHits = 0;  // steps (in total) that ended at SolverSettings::contactPasses
   long long steps = 0;          // steps taken in total
   // The large-scene path with SolverSettings::scaleSequentialImpacts, this
-  // step: the groups of two impacts or more on one ball replayed in
-  // sequence, and the groups of impacts left to the velocity passes because
-  // a touching contact pushed one of their balls.
+  // step: the groups replayed in sequence (two impulses or more on one ball,
+  // or a lone touching impact), and the groups left to the velocity passes
+  // (under gravity or scene forces, with a touching contact among them).
   int sequentialGroups = 0;
   int sequentialGroupsLeft = 0;
 };
