@@ -57,7 +57,11 @@ TEST(SettledPile, MostSeedsComeToRestWithTheirDisksApart) {
     // disks apart to 0.1 %; one where an arch is still giving way within the
     // issue's bound for a pile at rest, 5 %.
     const OverlapFigures overlap = measureOverlap(world.balls(), scene.balls);
-    EXPECT_GT(overlap.touchingPairs, 2000) << "seed " << p.seed;  // a pile, not a gas
+    // A pile, not a gas: at least one pair touching to 1e-9 for every two
+    // disks (the 10,000-disk piles at rest have 1.3-1.4 a disk; seed
+    // 20261201 here 0.95 since the restitution pass updates the friction,
+    // more than 1 before; a gas has next to none).
+    EXPECT_GT(overlap.touchingPairs, p.count / 2) << "seed " << p.seed;
     EXPECT_LT(overlap.max, run.atRest ? 1e-3 : 0.05) << "seed " << p.seed;
     std::printf("seed %llu: %s, kinetic energy at the end %.3g J, max overlap %.3g %%\n",
                 static_cast<unsigned long long>(p.seed), run.atRest ? "at rest" : "not at rest",
