@@ -19,11 +19,11 @@ namespace particles::cli {
 namespace {
 
 // clang-format off
-constexpr std::array<std::string_view, 18> kScaleOnly{
+constexpr std::array<std::string_view, 19> kScaleOnly{
     "--n", "--threads", "--poly", "--steps", "--no-box2d", "--iterations", "--position-passes",
     "--fast-pair-cells", "--band-rows", "--relaxation", "--shock", "--seed", "--seeds",
-    "--no-velocity-shock", "--no-settle-iteration", "--no-wavefront", "--substeps",
-    "--contact-hertz"};
+    "--no-velocity-shock", "--no-settle-iteration", "--no-wavefront", "--sequential-impacts",
+    "--substeps", "--contact-hertz"};
 // clang-format on
 // --repeats is shared: with --scale it repeats each engine run (default 1).
 constexpr std::array<std::string_view, 5> kTimestepOnly{"--full", "--scene", "--skip-csv",

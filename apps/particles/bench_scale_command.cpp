@@ -347,6 +347,9 @@ void addScaleBenchOptions(CLI::App& bench, ScaleBenchOptions& o) {
   bench.add_flag("--no-settle-iteration", o.noSettleIteration,
                  "Engine without the settle iteration once a pile has settled "
                  "(SolverSettings::scaleSettleIteration, on by default)");
+  bench.add_flag("--sequential-impacts", o.sequentialImpacts,
+                 "Engine with the impacts of a step in sequence where the passes would share "
+                 "them (SolverSettings::scaleSequentialImpacts, off by default)");
   bench.add_flag("--no-wavefront", o.noWavefront,
                  "Engine with its velocity passes (the soft step's: each substep's passes) one "
                  "after another instead of as a wavefront over the bands "
@@ -429,6 +432,7 @@ int runScaleBench(const ScaleBenchOptions& o) {
           if (o.noVelocityShock) scene.solver.scaleVelocityShock = false;
           if (o.noSettleIteration) scene.solver.scaleSettleIteration = false;
           if (o.noWavefront) scene.solver.scaleWavefront = false;
+          if (o.sequentialImpacts) scene.solver.scaleSequentialImpacts = true;
           if (o.substeps > 0) scene.solver.scaleSubsteps = o.substeps;
           if (o.contactHertz > 0.0) scene.solver.scaleContactHertz = o.contactHertz;
           const std::string name = o.substeps > 0 ? "soft" : "engine";

@@ -34,6 +34,8 @@ struct ScaleBenchOptions {
   bool noVelocityShock = false;  // --no-velocity-shock: SolverSettings::scaleVelocityShock off
   // --no-settle-iteration: SolverSettings::scaleSettleIteration off
   bool noSettleIteration = false;
+  // --sequential-impacts: SolverSettings::scaleSequentialImpacts on
+  bool sequentialImpacts = false;
   // --no-wavefront: SolverSettings::scaleWavefront off (same bits, whole passes)
   bool noWavefront = false;
   // --substeps: SolverSettings::scaleSubsteps, the soft step (0 = the rigid step, the default)

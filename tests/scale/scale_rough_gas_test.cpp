@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -131,6 +132,12 @@ TEST_P(ScaleRoughGasCooling, TemperaturesFollowTheKineticTheory) {
     const Temperatures t = measuredTemperatures(world.balls(), kMass, kRadius);
     const Temperatures expected = afterCollisions(theory, t0, c);
     const double tolerance = 3.0 * std::sqrt(2.0) / std::sqrt(n * c / 2.0) + 0.02;
+    std::printf(
+        "c = %.3f: Trot / theory %.4f, Ttr's fall / theory %.4f, R %.4f (theory %.4f), "
+        "tolerance %.3f\n",
+        c, t.rotational / expected.rotational,
+        (t0.translational - t.translational) / (t0.translational - expected.translational),
+        t.rotational / t.translational, expected.rotational / expected.translational, tolerance);
     EXPECT_NEAR(t.rotational / expected.rotational, 1.0, tolerance)
         << "Trot at c = " << c << ": " << t.rotational << " J, theory " << expected.rotational;
     EXPECT_NEAR((t0.translational - t.translational) / (t0.translational - expected.translational),

@@ -53,6 +53,7 @@ TEST(CliBenchScale, OptionsOfTheOtherBenchmarkAreExitTwo) {
   expectBadInput("bench --seeds 3", "--seeds needs --scale");
   expectBadInput("bench --no-velocity-shock", "--no-velocity-shock needs --scale");
   expectBadInput("bench --no-settle-iteration", "--no-settle-iteration needs --scale");
+  expectBadInput("bench --sequential-impacts", "--sequential-impacts needs --scale");
   expectBadInput("bench --band-rows 2", "--band-rows needs --scale");
   expectBadInput("bench --fast-pair-cells 1", "--fast-pair-cells needs --scale");
   expectBadInput("bench --no-wavefront", "--no-wavefront needs --scale");
@@ -230,6 +231,33 @@ TEST(CliBenchScale, RepeatsGiveMediansAndOneState) {
     EXPECT_EQ(withoutFields(repeated[i], {{19, 19}}), withoutFields(single[i], {{19, 19}}));
     EXPECT_NE(repeated[i], single[i]);
   }
+}
+
+// --sequential-impacts reaches the engine: the pile of 1,000 disks landing
+// (its first impacts in mid-air meet in groups the setting replays) ends in
+// another state than with the passes alone, and the same one on two threads.
+TEST(CliBenchScale, SequentialImpactsReachTheEngine) {
+  TempDir dir;
+  const auto hashes = [&](const std::string& extra) {
+    const std::string csv = dir.file("pile.csv").string();
+    const CliResult r = runCli("bench --scale --n 1000 --threads 1 2 --steps 120 --no-box2d" +
+                               extra + " --csv " + shellQuote(csv));
+    EXPECT_EQ(r.status, 0) << r.err;
+    std::istringstream in(readFile(csv));
+    std::string line;
+    std::getline(in, line);
+    std::vector<std::string> out;
+    while (std::getline(in, line)) {
+      const std::vector<std::string> f = fieldsOf(line);
+      if (f.size() == 26u) out.push_back(f[25]);
+    }
+    return out;
+  };
+  const std::vector<std::string> passes = hashes(""), sequence = hashes(" --sequential-impacts");
+  ASSERT_EQ(passes.size(), 2u);
+  ASSERT_EQ(sequence.size(), 2u);
+  EXPECT_EQ(sequence[0], sequence[1]);
+  EXPECT_NE(sequence[0], passes[0]);
 }
 
 }  // namespace
