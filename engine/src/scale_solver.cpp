@@ -145,21 +145,21 @@ struct RowChange {
 };
 
 inline RowChange raiseNormalTo(ScaleSolver::Motion* m, ScaleSolver::Row& r, double bounce) {
-  ScaleSolver::Motion& a = m[r.a];
-  ScaleSolver::Motion* b = r.b >= 0 ? &m[r.b] : nullptr;
+  const ScaleSolver::Motion& a = m[r.a];
+  const ScaleSolver::Motion* b = r.b >= 0 ? &m[r.b] : nullptr;  // a wall: none
+  // b's velocity relative to a's, read when called (the slip after the
+  // normal impulse); a wall stands still.
+  const auto relative = [&]() -> Vec2 { return (b ? b->velocity : Vec2::Zero()) - a.velocity; };
   const Vec2 n = r.normal();
-  const double gn = ((b ? b->velocity : Vec2::Zero()) - a.velocity).dot(n);
-  const double ln = std::max(0.0, r.lambdaN + (bounce - gn) * r.massN);
+  const double ln = std::max(0.0, r.lambdaN + (bounce - relative().dot(n)) * r.massN);
   RowChange c;
   c.normal = ln - r.lambdaN;
   r.lambdaN = ln;
   if (c.normal != 0.0) applyRow(m, r, c.normal, 0.0);
   if (r.friction > 0.0) {
-    const Vec2 tau = perpLeft(n);
-    const double gt = b ? (b->velocity - a.velocity).dot(tau) - b->angularVelocity * b->radius -
-                              a.angularVelocity * a.radius
-                        : -a.velocity.dot(tau) - a.angularVelocity * a.radius;
-    c.tangent = frictionChange(r, gt);
+    const double spinB = b ? b->angularVelocity * b->radius : 0.0;
+    c.tangent =
+        frictionChange(r, relative().dot(perpLeft(n)) - spinB - a.angularVelocity * a.radius);
     if (c.tangent != 0.0) applyRow(m, r, 0.0, c.tangent);
   }
   return c;
@@ -810,18 +810,14 @@ void ScaleSolver::step(const ScaleBodies& s, const SolverSettings& settings, Ste
                             [&](std::size_t k) { solveRow<true>(m, rows_[k], 1.0); });
           case Pass::Restitution:
             return onePhase(t, phase, band, parity, [&](std::size_t k) {
-              // By default only the rows that bounce are read here.
-              if (!sequential) {
-                if (bounce_[k] > 0.0) restituteRow(m, rows_[k], bounce_[k]);
-                return;
-              }
-              const Row& r = rows_[k];
               // A row took part in the step's impacts if it pushed before or
               // after its bounce: one whose balls another impact already
-              // sends apart faster than its bounce gives its impulse back here.
-              const bool pushed = r.lambdaN > 0.0;
+              // sends apart faster than its bounce gives its impulse back
+              // here. By default only the rows that bounce are read.
+              const Row& r = rows_[k];
+              const bool pushed = sequential && r.lambdaN > 0.0;
               if (bounce_[k] > 0.0) restituteRow(m, rows_[k], bounce_[k]);
-              if (pushed || r.lambdaN > 0.0 || r.lambdaT != 0.0)
+              if (sequential && (pushed || r.lambdaN > 0.0 || r.lambdaT != 0.0))
                 impactRows_[static_cast<std::size_t>(t)].rows.push_back(static_cast<int>(k));
             });
           case Pass::Support:

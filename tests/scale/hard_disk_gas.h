@@ -84,6 +84,15 @@ inline HardDiskGas hardDiskGas(int side, double phi, double e, double dt, double
   return g;
 }
 
+// The scene started from a state of its balls (a relaxed gas): positions
+// and velocities from `balls`, in the scene's order.
+inline void startFrom(SceneDef& scene, const std::vector<BallState>& balls) {
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    scene.balls[i].position = balls[i].position;
+    scene.balls[i].velocity = balls[i].velocity;
+  }
+}
+
 // The mean kinetic energy per disk, J (all disks of mass 1 kg here).
 inline double temperature(const std::vector<BallState>& balls) {
   double sum = 0.0;

@@ -179,11 +179,7 @@ TEST(ScaleGas, InelasticGasCoolsByHaffsLaw) {
   HardDiskGas gas = hardDiskGas(60, phi, 1.0, dt, 1.0, 7);
   World elastic(gas.scene);
   elastic.run(1200);
-  const std::vector<BallState> relaxed = elastic.balls();
-  for (std::size_t i = 0; i < relaxed.size(); ++i) {
-    gas.scene.balls[i].position = relaxed[i].position;
-    gas.scene.balls[i].velocity = relaxed[i].velocity;
-  }
+  startFrom(gas.scene, elastic.balls());
   gas.scene.contact = {e, 0.0};
   World world(gas.scene);
   ASSERT_TRUE(world.plan().scale);

@@ -109,10 +109,7 @@ TEST_P(ScaleRoughGasCooling, TemperaturesFollowTheKineticTheory) {
   const double mu = GetParam();
   HardDiskGas gas = hardDiskGas(100, 0.3, 1.0, 1.0 / 240.0, 1.0, 7);
   const std::vector<BallState>& relaxed = relaxedGas();
-  for (std::size_t i = 0; i < relaxed.size(); ++i) {
-    gas.scene.balls[i].position = relaxed[i].position;
-    gas.scene.balls[i].velocity = relaxed[i].velocity;
-  }
+  startFrom(gas.scene, relaxed);
   gas.scene.contact = {1.0, mu};
   for (WallDef& w : gas.scene.walls) w.friction = 0.0;
   World world(gas.scene);
