@@ -65,7 +65,7 @@ TEST(ExampleScenes, TheListedOnesExist) {
   for (const char* name :
        {"oblique_floor_hit", "free_flight", "projectile", "head_on_spinning", "gears",
         "ball_in_box", "newtons_cradle", "pull_drag", "constant_force_torque", "rolling_disk",
-        "density_and_inertia", "no_slip_walls", "small_pile", "small_pile_soft"})
+        "density_and_inertia", "no_slip_walls", "small_pile", "small_pile_soft", "hourglass"})
     EXPECT_TRUE(std::filesystem::exists(sceneFile(std::string(name) + ".json"))) << name;
 }
 
