@@ -106,15 +106,18 @@ TEST(ScaleSilo, DischargeFollowsBeverloosLaw) {
   // opening on either side; k is of order one diameter, positive.
   EXPECT_GT(beverloo.k, 0.0);
   EXPECT_LT(beverloo.k, 3.0);
-  // C: grains falling freely from rest on an arch of radius R = D/2 cross
-  // the orifice at v(x) = sqrt(2 g sqrt(R^2 - x^2)); at the bulk density
-  // the flow is rho sqrt(2 g) R^(3/2) B(1/2, 5/4), so C = B(1/2, 5/4) / 2 =
-  // 0.874 (docs/scale.md, "The silo"). The arch is a heuristic (the fill
-  // dilates where it falls; the grains leave the arch moving), so C is
-  // checked to lie within 20 % of it.
+  // C is not a closed form: the free-fall arch (grains falling freely from
+  // rest on an arch of radius D/2, at the bulk density) gives
+  // B(1/2, 5/4) / 2 = 0.874, a heuristic, and C depends on the solver: the
+  // default's velocity shock (SolverSettings::scaleVelocityShock) slows
+  // this flow by about a fifth (C = 0.875; without it 1.117, Box2D 2.4.1
+  // about 1.25: docs/scale.md, "The silo"). So C is only checked to be of
+  // order one, which catches a wrong density, g or unit, not the solver's
+  // bias.
   const double arch = 0.5 * std::tgamma(0.5) * std::tgamma(1.25) / std::tgamma(1.75);
   std::printf("free-fall arch: C = %.4f; measured / arch = %.4f\n", arch, C / arch);
-  EXPECT_NEAR(C / arch, 1.0, 0.2);
+  EXPECT_GT(C, 0.5);
+  EXPECT_LT(C, 1.5);
 }
 
 // Dimensional analysis: with the geometry and the material fixed, the flow
