@@ -10,16 +10,10 @@ namespace particles::scenefile {
 namespace {
 
 constexpr std::array<std::string_view, 2> kContactKeys{"restitution", "friction"};
-constexpr std::array<std::string_view, 10> kSolverKeys{"contact_passes",
-                                                       "correction_passes",
-                                                       "grid_threshold",
-                                                       "swept_walls",
-                                                       "swept_balls",
-                                                       "sequential_impacts",
-                                                       "soft_substeps",
-                                                       "soft_contact_hertz",
-                                                       "soft_contact_damping_ratio",
-                                                       "soft_contact_push_speed"};
+constexpr std::array<std::string_view, 11> kSolverKeys{
+    "contact_passes",     "correction_passes",          "grid_threshold",         "swept_walls",
+    "swept_balls",        "sequential_impacts",         "velocity_shock",         "soft_substeps",
+    "soft_contact_hertz", "soft_contact_damping_ratio", "soft_contact_push_speed"};
 
 // Upper bound on both pass counts. A resting stack can use every pass of every
 // step (docs/fuzzing.md, finding 1), so an unbounded count let a three-ball
@@ -84,6 +78,7 @@ SolverSettings readSolver(const Node& node, double dt) {
   if (auto b = node.optional("swept_walls")) solver.sweptWalls = readBool(*b);
   if (auto b = node.optional("swept_balls")) solver.sweptBalls = readBool(*b);
   if (auto b = node.optional("sequential_impacts")) solver.scaleSequentialImpacts = readBool(*b);
+  if (auto b = node.optional("velocity_shock")) solver.scaleVelocityShock = readBool(*b);
   readSoftStep(node, dt, solver);
   return solver;
 }

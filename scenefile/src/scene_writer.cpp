@@ -65,6 +65,7 @@ nlohmann::json sceneJson(const SceneDef& s) {
                  {"swept_balls", s.solver.sweptBalls}};
   // Only when on: scene files written before it keep their text.
   if (s.solver.scaleSequentialImpacts) j["solver"]["sequential_impacts"] = true;
+  if (!s.solver.scaleVelocityShock) j["solver"]["velocity_shock"] = false;
   // The soft step's keys only with substeps: the loader refuses its spring's
   // keys without them.
   if (s.solver.scaleSubsteps > 0) {

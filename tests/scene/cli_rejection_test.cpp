@@ -351,6 +351,11 @@ TEST_F(Rejection, SweptBallsNotBoolean) {
                  "must be true or false, got null");
 }
 
+TEST_F(Rejection, VelocityShockNotBoolean) {
+  expectRejected(withBall(R"("solver": {"velocity_shock": "off"})"), "solver.velocity_shock",
+                 "must be true or false, got");
+}
+
 TEST_F(Rejection, SequentialImpactsNotBoolean) {
   expectRejected(withBall(R"("solver": {"sequential_impacts": 1})"), "solver.sequential_impacts",
                  "must be true or false, got");

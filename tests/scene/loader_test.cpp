@@ -62,7 +62,8 @@ TEST(Loader, EveryTopLevelKeyRead) {
     "forces": [{"type": "pull", "ball": 0, "target": [3, 2], "stiffness": 10}],
     "dt": 0.002, "duration": 0.5,
     "solver": {"contact_passes": 7, "correction_passes": 3, "grid_threshold": 0,
-               "swept_walls": true, "swept_balls": true, "sequential_impacts": true}})");
+               "swept_walls": true, "swept_balls": true, "sequential_impacts": true,
+               "velocity_shock": false}})");
   EXPECT_EQ(s.name, "all");
   EXPECT_EQ(s.gravity, Vec2(0.5, -9.81));
   EXPECT_EQ(s.contact.restitution, 0.25);
@@ -82,6 +83,7 @@ TEST(Loader, EveryTopLevelKeyRead) {
   EXPECT_TRUE(s.solver.sweptWalls);
   EXPECT_TRUE(s.solver.sweptBalls);
   EXPECT_TRUE(s.solver.scaleSequentialImpacts);
+  EXPECT_FALSE(s.solver.scaleVelocityShock);
 }
 
 TEST(Loader, SoftStepKeys) {

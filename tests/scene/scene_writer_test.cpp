@@ -48,6 +48,7 @@ TEST(SceneWriter, RoundTripsEveryField) {
   s.solver.sweptWalls = true;  // not the defaults: the writer must carry them
   s.solver.sweptBalls = true;
   s.solver.scaleSequentialImpacts = true;
+  s.solver.scaleVelocityShock = false;
 
   const SceneDef r = parseScene(sceneText(s), "written.json");
   EXPECT_EQ(r.name, s.name);
@@ -92,6 +93,7 @@ TEST(SceneWriter, RoundTripsEveryField) {
   EXPECT_TRUE(r.solver.sweptWalls);
   EXPECT_TRUE(r.solver.sweptBalls);
   EXPECT_TRUE(r.solver.scaleSequentialImpacts);
+  EXPECT_FALSE(r.solver.scaleVelocityShock);
   EXPECT_EQ(r.solver.scaleSubsteps, 0);  // the rigid step: no soft keys written
 }
 
