@@ -1,6 +1,7 @@
 #include "cli_common.h"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -15,6 +16,21 @@ void printError(const std::string& message) {
 
 void printWarning(const std::string& message) {
   std::cerr << "particles: warning: " << message << '\n';
+}
+
+void printRangeWarnings(const std::vector<reference::RangeIssue>& issues) {
+  // checkBox2DRange groups the issues by code.
+  for (std::size_t i = 0; i < issues.size();) {
+    std::size_t end = i;
+    while (end < issues.size() && issues[end].code == issues[i].code) ++end;
+    const std::size_t shown = std::min(end - i, kRangeWarningsShown);
+    for (std::size_t k = i; k < i + shown; ++k)
+      printWarning("outside Box2D's range: " + issues[k].message);
+    if (end - i > shown)
+      printWarning("outside Box2D's range: " + std::to_string(end - i - shown) +
+                   " more of the same kind (" + reference::rangeCodeName(issues[i].code) + ")");
+    i = end;
+  }
 }
 
 CLI::Validator integerInRange(long long min, long long max) {

@@ -4,6 +4,9 @@
 #pragma once
 
 #include <string>
+#include <vector>
+
+#include "particles/reference/box2d_range.h"
 
 namespace CLI {
 class App;
@@ -16,6 +19,13 @@ namespace particles::cli {
 // "particles: error: MESSAGE" and "particles: warning: MESSAGE", one line on stderr.
 void printError(const std::string& message);
 void printWarning(const std::string& message);
+
+// The range issues of a scene (reference::checkBox2DRange) as warnings,
+// "outside Box2D's range: ...": the first kRangeWarningsShown of each kind,
+// then one line counting the rest of that kind. A 460-grain hourglass raised
+// one identical-looking warning per grain.
+inline constexpr std::size_t kRangeWarningsShown = 3;
+void printRangeWarnings(const std::vector<reference::RangeIssue>& issues);
 
 // An integer in [min, max], checked on the text before CLI11
 // converts it, so that "-1" is "--cases: must be an integer >= 0, got -1"

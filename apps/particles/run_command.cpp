@@ -216,8 +216,7 @@ int run(const RunOptions& o) {
     reference::Box2DSettings settings = reference::Box2DSettings::forScene(scene);
     settings.velocityIterations = o.iterations.velocity;
     settings.positionIterations = o.iterations.position;
-    for (const reference::RangeIssue& issue : reference::checkBox2DRange(scene, settings))
-      printWarning("outside Box2D's range: " + issue.message);
+    printRangeWarnings(reference::checkBox2DRange(scene, settings));
     std::optional<reference::Box2DWorld> world;
     try {
       world.emplace(scene, settings);

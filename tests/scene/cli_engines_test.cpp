@@ -112,6 +112,32 @@ TEST(CliBox2D, CsvTrajectory) {
   EXPECT_EQ(lineCount(text), 1u + 5u);  // header + steps 0, 500, 1000, 1500, 2000
 }
 
+// Ten balls of 5 cm, each below the 0.1 m Box2D is tuned for: the first
+// three say so, one more line counts the other seven (a 460-grain hourglass
+// printed 460 lines).
+TEST(CliBox2D, ManyRangeIssuesOfOneKindAreCounted) {
+  const TempDir dir;
+  std::string balls;
+  for (int i = 0; i < 10; ++i)
+    balls += std::string(i ? ", " : "") + R"({"position": [)" + std::to_string(i) +
+             R"(, 0], "radius": 0.05, "mass": 1})";
+  const std::string scene =
+      dir.write("tiny_many.json", R"({"balls": [)" + balls + R"(], "duration": 0.1})");
+  const CliResult r = runCli("run " + shellQuote(scene) + " --engine box2d");
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::size_t radiusLines = 0;
+  std::size_t start = 0;
+  for (std::size_t end; (end = r.err.find('\n', start)) != std::string::npos; start = end + 1) {
+    const std::string line = r.err.substr(start, end - start);
+    EXPECT_TRUE(line.starts_with("particles: warning: outside Box2D's range: ")) << line;
+    if (line.find("has radius 0.05") != std::string::npos) ++radiusLines;
+  }
+  EXPECT_EQ(radiusLines, 3u) << r.err;
+  EXPECT_NE(r.err.find("outside Box2D's range: 7 more of the same kind (RadiusRange)\n"),
+            std::string::npos)
+      << r.err;
+}
+
 TEST(CliBox2D, SceneOutsideBox2DsRangeIsAWarning) {
   // A 1 cm ball: below the 0.1 m Box2D is tuned for, and near its slop.
   const TempDir dir;

@@ -102,9 +102,7 @@ int view(const ViewCliOptions& o) {
                " (it has " + std::to_string(scene.balls.size()) + ")");
     return kExitBadInput;
   }
-  for (const reference::RangeIssue& issue :
-       reference::checkBox2DRange(scene, reference::Box2DSettings::forScene(scene)))
-    printWarning("outside Box2D's range: " + issue.message);
+  printRangeWarnings(reference::checkBox2DRange(scene, reference::Box2DSettings::forScene(scene)));
   // SFML aborts the process when it cannot open the X display; say why first.
   const char* display = std::getenv("DISPLAY");
   if (display == nullptr || *display == '\0') {
