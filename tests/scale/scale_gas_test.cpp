@@ -132,8 +132,9 @@ Equilibrium measureElasticGas(double phi, double dt) {
       impulse += in * e.normalImpulse;
     }
     for (const BallState& b : balls) disksInside += inside(b.position, gas.side, inset) ? 1.0 : 0.0;
-    temperatureSum += temperature(balls);
-    blockT[static_cast<std::size_t>(k * kBlocks / measured)] += temperature(balls);
+    const double T = temperature(balls);
+    temperatureSum += T;
+    blockT[static_cast<std::size_t>(k * kBlocks / measured)] += T;
   }
   const double time = measured * dt;
   const double meanInside = disksInside / measured;

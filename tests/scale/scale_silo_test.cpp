@@ -26,20 +26,11 @@ struct PowerFit {
 };
 
 PowerFit fitPower(const std::vector<double>& D, const std::vector<double>& Q, double beta) {
-  const double n = static_cast<double>(D.size());
-  double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
-  for (std::size_t i = 0; i < D.size(); ++i) {
-    const double y = std::pow(Q[i], 1.0 / beta);
-    sx += D[i];
-    sy += y;
-    sxx += D[i] * D[i];
-    sxy += D[i] * y;
-  }
-  const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
-  const double intercept = (sy - slope * sx) / n;
+  LineFit line;
+  for (std::size_t i = 0; i < D.size(); ++i) line.add(D[i], std::pow(Q[i], 1.0 / beta));
   PowerFit f;
-  f.k = -intercept / slope;
-  f.prefactor = std::pow(slope, beta);
+  f.k = -line.intercept() / line.slope();
+  f.prefactor = std::pow(line.slope(), beta);
   for (std::size_t i = 0; i < D.size(); ++i)
     f.worst = std::max(f.worst, std::abs(f.prefactor * std::pow(D[i] - f.k, beta) / Q[i] - 1.0));
   return f;

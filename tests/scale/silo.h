@@ -113,6 +113,21 @@ inline double bulkDensity(const SiloDef& d, const std::vector<BallState>& fill, 
   return m / ((hi.x() - lo.x()) * (hi.y() - lo.y()));
 }
 
+// A straight line y = slope x + intercept fitted by least squares to the
+// points added one by one.
+struct LineFit {
+  double n = 0.0, sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
+  void add(double x, double y) {
+    n += 1.0;
+    sx += x;
+    sy += y;
+    sxx += x * x;
+    sxy += x * y;
+  }
+  double slope() const { return (n * sxy - sx * sy) / (n * sxx - sx * sx); }
+  double intercept() const { return (sy - slope() * sx) / n; }
+};
+
 // The mass flow rate (kg/s) through the orifice d.orifice under the settled
 // fill, fitted by least squares to the mass discharged, sampled every 6
 // steps from `from` s to `to` s after the orifice opens.
@@ -120,19 +135,13 @@ inline double dischargeRate(const SiloDef& d, const std::vector<BallState>& fill
                             double to) {
   World w(openSilo(d, fill));
   const long long every = 6;
-  double st = 0.0, sm = 0.0, stt = 0.0, stm = 0.0;
-  int samples = 0;
+  LineFit discharged;
   while (w.time() < to - 0.5 * d.dt) {
     w.run(every);
     if (w.time() < from - 0.5 * d.dt) continue;
-    const double t = w.time(), m = dischargedMass(w);
-    st += t;
-    sm += m;
-    stt += t * t;
-    stm += t * m;
-    ++samples;
+    discharged.add(w.time(), dischargedMass(w));
   }
-  return (samples * stm - st * sm) / (samples * stt - st * st);
+  return discharged.slope();
 }
 
 }  // namespace particles::test
